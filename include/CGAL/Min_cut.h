@@ -1,0 +1,14 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Convenience header: the whole public interface of the Min_cut package.
+
+#ifndef CGAL_MIN_CUT_H
+#define CGAL_MIN_CUT_H
+
+#include <CGAL/Min_cut/Flow_network.h>
+#include <CGAL/Min_cut/Boykov_kolmogorov_max_flow.h>
+#include <CGAL/Min_cut/Push_relabel_max_flow.h>
+#include <CGAL/Min_cut/solve_min_cut.h>
+
+#endif // CGAL_MIN_CUT_H

@@ -1,0 +1,102 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Globally minimal discrete curves by a min-cut of the directed dual graph of a line arrangement.
+
+#ifndef CGAL_VARIATIONAL_MINIMIZATION_MINIMIZE_CURVE_FUNCTIONAL_2_H
+#define CGAL_VARIATIONAL_MINIMIZATION_MINIMIZE_CURVE_FUNCTIONAL_2_H
+
+#include <CGAL/MDCS/progress.h>
+#include <CGAL/Min_cut/solve_min_cut.h>
+#include <CGAL/Variational_minimization/Curve_problem_2.h>
+#include <CGAL/Variational_minimization/Line_arrangement_2.h>
+#include <CGAL/Variational_minimization/Minimal_curve_2.h>
+#include <CGAL/Variational_minimization/curve_edge_weights_2.h>
+#include <CGAL/Variational_minimization/internal/curve_dual_network_2.h>
+#include <CGAL/Variational_minimization/internal/curve_from_edges_2.h>
+
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Variational_minimization {
+
+/*!
+  \brief Builds the arrangement of `lines` in the problem's box, with the side walls split at the end values.
+
+  \throws std::invalid_argument when the problem is invalid (see `Curve_problem_2::validate()`), when `lines`
+  is empty, or when no line crosses the interior of the box.
+*/
+template <class Progress = CGAL::MDCS::No_progress>
+Line_arrangement_2 build_curve_arrangement_2(const Curve_problem_2& problem,
+                                             const std::vector<Arrangement_line_2>& lines,
+                                             Progress progress = Progress())
+{
+  problem.validate();
+  if(lines.empty())
+    throw std::invalid_argument("MDCS: a curve problem needs at least one line (the grid is empty)");
+  Line_arrangement_2 arrangement(problem.box, lines, problem.left_marks(), problem.right_marks(), progress);
+  bool any = false;
+  for(std::size_t i = 0; i < arrangement.number_of_input_lines() && !any; ++i)
+    any = arrangement.is_line_used(Line_arrangement_2::Line_index(i));
+  if(!any)
+    throw std::invalid_argument("MDCS: the arrangement is degenerate: none of the " + std::to_string(lines.size()) +
+                                " lines crosses the interior of the box");
+  return arrangement;
+}
+
+/*!
+  \brief Finds the globally minimal discrete curve on `arrangement` by a minimum cut of its directed dual
+  graph (thesis ch. 2.6.1).
+
+  \param arrangement built with `build_curve_arrangement_2(problem, ...)` (its side walls must be split at the
+         end values).
+  \param weights the edge weights, from `curve_edge_weights_2()`.
+  \param engine a model of `MaxFlowEngine` (`CGAL::Min_cut::Boykov_kolmogorov_max_flow` or
+         `CGAL::Min_cut::Push_relabel_max_flow`).
+  \param progress a progress callback, stages `"network"` and `"max-flow"`.
+
+  The result is the curve whose energy is minimal among all functions formed by edges of the arrangement
+  that meet the end conditions; `solver_value` is the cut value, `energy` the sum of the curve's edge
+  weights (equal up to rounding). If no such function exists, `is_feasible` is false.
+*/
+template <class Engine, class Progress = CGAL::MDCS::No_progress>
+Minimal_curve_2 minimize_curve_functional_2(const Line_arrangement_2& arrangement, const std::vector<double>& weights,
+                                            const Curve_problem_2& problem, Engine engine,
+                                            Progress progress = Progress())
+{
+  problem.validate();
+  if(weights.size() != arrangement.number_of_edges())
+    throw std::invalid_argument("MDCS: minimize_curve_functional_2: one weight per arrangement edge is required");
+  const CGAL::Min_cut::Flow_network<double> network = internal::curve_dual_network_2(arrangement, weights, problem);
+  const auto cut = CGAL::Min_cut::solve_min_cut(network, engine, progress);
+
+  Minimal_curve_2 curve;
+  if(!cut.is_finite)
+    return curve; // infeasible: no function on this grid meets the end conditions
+  curve.is_feasible = true;
+  curve.solver_value = cut.value;
+  std::vector<Line_arrangement_2::Edge_index> edges;
+  edges.reserve(cut.chain.size());
+  for(const auto& facet : cut.chain) {
+    if(!facet.forward)
+      throw std::logic_error("MDCS: internal error: a finite cut crossed an edge downwards");
+    edges.push_back(facet.id);
+  }
+  internal::order_curve_edges(arrangement, weights, edges, curve);
+  return curve;
+}
+
+/// Same, with the default max-flow engine of `CGAL::Min_cut::solve_min_cut()`.
+inline Minimal_curve_2 minimize_curve_functional_2(const Line_arrangement_2& arrangement,
+                                                   const std::vector<double>& weights,
+                                                   const Curve_problem_2& problem)
+{
+  return minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Default_max_flow_engine());
+}
+
+} // namespace Variational_minimization
+} // namespace CGAL
+
+#endif // CGAL_VARIATIONAL_MINIMIZATION_MINIMIZE_CURVE_FUNCTIONAL_2_H
