@@ -45,7 +45,7 @@ public:
     typedef internal::Csr_flow_graph<Capacity> Flow_graph;
     typedef typename Flow_graph::edge_descriptor edge_descriptor;
 
-    Flow_graph network(problem, internal::Reverse_arc_policy::paired);
+    Flow_graph network(problem);
     const std::size_t nv = num_vertices(network.graph());
     std::vector<edge_descriptor> predecessor(nv);
     std::vector<boost::default_color_type> colour(nv);

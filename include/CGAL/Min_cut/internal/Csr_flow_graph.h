@@ -27,18 +27,6 @@ namespace CGAL {
 namespace Min_cut {
 namespace internal {
 
-// How an arc pair (u, v, c_uv, c_vu) becomes Boost arcs.
-enum class Reverse_arc_policy
-{
-  // Two arcs, each the other's reverse, with capacities c_uv and c_vu. Boykov-Kolmogorov accepts
-  // reverse arcs with capacity; this halves the arcs of a two-way facet.
-  paired,
-  // Every positive capacity gets its own arc and a zero-capacity reverse arc (up to four arcs).
-  // push_relabel's second phase recognises "reverse arcs" by capacity 0 and can only send excess
-  // back along those, so a two-way pair would strand excess and give a wrong cut.
-  split
-};
-
 typedef boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, boost::no_property,
                                            boost::no_property, std::uint32_t, std::uint32_t>
   Csr_graph;
@@ -67,7 +55,11 @@ private:
 };
 
 // The arcs of the residual network in CSR order, with capacities, residual capacities and reverse arcs.
-// Vertices 0..n-1 are the nodes of the problem, n is the source and n+1 the sink.
+// Vertices 0..n-1 are the nodes of the problem, n is the source and n+1 the sink. An arc pair
+// (u, v, c_uv, c_vu) becomes two arcs, each the other's reverse, carrying c_uv and c_vu: both
+// Boykov-Kolmogorov and the push-relabel preflow phase accept capacity on reverse arcs, and this
+// halves the arcs of two-way facets compared with giving every capacity its own zero-capacity twin.
+// A terminal capacity becomes an arc with a zero-capacity reverse arc.
 template <class Capacity>
 class Csr_flow_graph
 {
@@ -79,7 +71,7 @@ public:
   typedef boost::property_map<Graph, boost::vertex_index_t>::const_type Vertex_index_map;
   typedef boost::iterator_property_map<Capacity*, Edge_index_map, Capacity, Capacity&> Capacity_map;
 
-  Csr_flow_graph(const Max_flow_problem<Capacity>& problem, Reverse_arc_policy policy)
+  explicit Csr_flow_graph(const Max_flow_problem<Capacity>& problem)
   {
     const std::size_t n = problem.number_of_nodes();
     // Vertex indices n and n + 1, and the vertex count n + 2, must fit in 32 bits.
@@ -100,12 +92,7 @@ public:
     const std::size_t m = problem.number_of_arc_pairs();
     for(std::size_t k = 0; k < m; ++k) {
       const auto p = problem.arc_pair(k);
-      if(policy == Reverse_arc_policy::paired) {
-        if(p.c_uv > 0 || p.c_vu > 0) count_pair(p.u, p.v);
-      } else {
-        if(p.c_uv > 0) count_pair(p.u, p.v);
-        if(p.c_vu > 0) count_pair(p.v, p.u);
-      }
+      if(p.c_uv > 0 || p.c_vu > 0) count_pair(p.u, p.v);
     }
     std::uint64_t total = 0;
     for(std::size_t x = 0; x < nv; ++x) {
@@ -144,12 +131,7 @@ public:
     }
     for(std::size_t k = 0; k < m; ++k) {
       const auto p = problem.arc_pair(k);
-      if(policy == Reverse_arc_policy::paired) {
-        if(p.c_uv > 0 || p.c_vu > 0) place(p.u, p.v, p.c_uv, p.c_vu);
-      } else {
-        if(p.c_uv > 0) place(p.u, p.v, p.c_uv, Capacity(0));
-        if(p.c_vu > 0) place(p.v, p.u, p.c_vu, Capacity(0));
-      }
+      if(p.c_uv > 0 || p.c_vu > 0) place(p.u, p.v, p.c_uv, p.c_vu);
     }
     std::vector<std::uint32_t>().swap(next);
 
@@ -174,15 +156,26 @@ public:
   Reverse_arc_map reverse_arc_map() const { return Reverse_arc_map(&graph_, reverse_.data()); }
   Vertex_index_map vertex_index_map() const { return get(boost::vertex_index, graph_); }
 
-  // The canonical (minimal) source side of a minimum cut: the nodes reachable from the source
-  // over arcs with residual capacity > 0, once a maximum flow is in the residual capacities.
-  void source_side_by_residual_search(std::vector<char>& on_source_side) const
+  // The nodes reachable over arcs with residual capacity > 0 from the source and from the nodes
+  // with positive `excess` (if given), i.e. the minimal source side of a minimum cut once the
+  // residual capacities hold a maximum flow, or a maximum preflow together with its excesses.
+  // An excess below the rounding noise of its node (a few ulps of the capacities around it) is
+  // ignored: in exact arithmetic it would be zero, and starting from it would add nodes that only
+  // rounding ties to the source side.
+  void source_side_by_residual_search(std::vector<char>& on_source_side,
+                                      const std::vector<Capacity>* excess = nullptr) const
   {
     const std::size_t n = std::size_t(source_);
     std::vector<char> reached(n + 2, 0);
     std::vector<vertex_descriptor> stack;
     stack.push_back(source_);
     reached[source_] = 1;
+    if(excess != nullptr)
+      for(std::size_t x = 0; x < n; ++x)
+        if((*excess)[x] > 0 && (*excess)[x] > rounding_noise(vertex_descriptor(x))) {
+          reached[x] = 1;
+          stack.push_back(vertex_descriptor(x));
+        }
     while(!stack.empty()) {
       const vertex_descriptor x = stack.back();
       stack.pop_back();
@@ -195,12 +188,24 @@ public:
         }
       }
     }
-    CGAL_postcondition(!reached[sink_]); // otherwise the flow was not maximum
+    CGAL_postcondition(!reached[sink_]); // otherwise the (pre)flow was not maximum
     reached.resize(n);
     on_source_side.swap(reached);
   }
 
 private:
+  // 16 ulps of the total capacity of the arcs at x (in and out): a bound on the rounding error
+  // of sums of flows through x.
+  Capacity rounding_noise(vertex_descriptor x) const
+  {
+    Capacity total = 0;
+    for(auto arcs = out_edges(x, graph_); arcs.first != arcs.second; ++arcs.first) {
+      const std::uint32_t e = (*arcs.first).idx;
+      total += capacity_[e] + capacity_[reverse_[e]];
+    }
+    return Capacity(16) * std::numeric_limits<Capacity>::epsilon() * total;
+  }
+
   // Walks the rows of (row_start, column) as (source, target) pairs, in CSR order.
   class Sorted_arc_iterator
   {
