@@ -190,14 +190,22 @@ Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& pro
     const VM::Minimal_curve_2 path = VM::directed_shortest_path_2(arrangement, weights, problem, progress);
     run.seconds_oracle = seconds_since(t3);
     run.oracle_value = path.solver_value;
-    grid_segments.reserve(arrangement.number_of_edges());
+    // Draw each line clipped to the box (from its first to its last vertex), not its many edges.
+    std::vector<VM::Line_arrangement_2::Vertex_index> first(lines.size(), VM::Line_arrangement_2::null_index), last = first;
     for(std::size_t i = 0; i < arrangement.number_of_edges(); ++i) {
       const auto& e = arrangement.edge(VM::Line_arrangement_2::Edge_index(i));
       if(e.kind != VM::Line_arrangement_2::LINE_EDGE) continue;
       const auto& a = arrangement.point(e.source);
       const auto& b = arrangement.point(e.target);
-      grid_segments.push_back({a.x(), a.y(), b.x(), b.y()});
+      if(first[e.line] == VM::Line_arrangement_2::null_index || a < arrangement.point(first[e.line])) first[e.line] = e.source;
+      if(last[e.line] == VM::Line_arrangement_2::null_index || arrangement.point(last[e.line]) < b) last[e.line] = e.target;
     }
+    for(std::size_t l = 0; l < lines.size(); ++l)
+      if(first[l] != VM::Line_arrangement_2::null_index) {
+        const auto& a = arrangement.point(first[l]);
+        const auto& b = arrangement.point(last[l]);
+        grid_segments.push_back({a.x(), a.y(), b.x(), b.y()});
+      }
   }
 
   // Local descent, to show what a local method finds from a natural start.
@@ -253,6 +261,8 @@ Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& pro
   plot.ymin = problem.box.ymin();
   plot.ymax = problem.box.ymax();
   plot.preserve_aspect_ratio = false;
+  plot.max_grid_segments = 4000;
+  plot.legend_position = s.functional == "catenoid" ? VM::Svg_curve_plot::BOTTOM_RIGHT : VM::Svg_curve_plot::TOP_RIGHT;
   plot.grid_segments = std::move(grid_segments);
   for(const auto& p : run.curve.polyline) plot.solution.push_back({p.x(), p.y()});
   plot.solution_label = "global discrete minimum (" + std::string(s.grid == "regular" ? "C_n, dynamic programming" : "min-cut") + ")";

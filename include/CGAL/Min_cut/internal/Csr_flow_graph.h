@@ -74,10 +74,11 @@ public:
   explicit Csr_flow_graph(const Max_flow_problem<Capacity>& problem)
   {
     const std::size_t n = problem.number_of_nodes();
-    // Vertex indices n and n + 1, and the vertex count n + 2, must fit in 32 bits.
-    if(n > std::size_t(std::numeric_limits<std::uint32_t>::max()) - 2)
-      throw std::invalid_argument("MDCS: the Boost.Graph max-flow engines handle at most 2^32 - 3 nodes "
-                                  "(32-bit vertex indices)");
+    // The terminals take indices n and n + 1, and Boost's CSR construction computes the vertex
+    // count plus one in the 32-bit vertex type: n + 3 must fit.
+    if(n > std::size_t(std::numeric_limits<std::uint32_t>::max()) - 3)
+      throw std::invalid_argument("MDCS: the Boost.Graph max-flow engines handle at most 2^32 - 4 nodes "
+                                  "(32-bit vertex indices); the network has " + std::to_string(n));
     source_ = vertex_descriptor(n);
     sink_ = vertex_descriptor(n + 1);
     const std::size_t nv = n + 2;

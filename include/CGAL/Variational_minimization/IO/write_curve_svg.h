@@ -93,6 +93,10 @@ struct Svg_curve_plot
   double margin = 60;
   /// Same scale on both axes (the plot area shrinks in one direction), so slopes look right.
   bool preserve_aspect_ratio = true;
+  /// Corner of the plot area that holds the legend.
+  enum Legend_position { TOP_RIGHT, BOTTOM_RIGHT, TOP_LEFT, BOTTOM_LEFT };
+  /// See `Legend_position`.
+  Legend_position legend_position = TOP_RIGHT;
 };
 
 namespace internal {
@@ -243,14 +247,14 @@ inline void write_curve_svg(std::ostream& out, const Svg_curve_plot& plot)
     os << "<path d=\"M " << v.left << ' ' << v.py(0) << " H " << v.left + v.plot_w
        << "\" stroke=\"#808080\" stroke-width=\"0.8\" fill=\"none\"/>\n";
 
-  // Curves: analytic, extras, then the solution on top.
+  // Curves: extras, analytic, then the solution on top.
   os << "<g id=\"curves\" clip-path=\"url(#mdcs-plot-area)\">\n";
   const std::string solution_color = "#1f3a93", analytic_color = "#000000";
-  if(!p.analytic.empty())
-    internal::write_svg_polyline(os, v, p.analytic, analytic_color, 1.5, true);
   for(const Svg_curve& c : p.extra_curves)
     if(!c.points.empty())
       internal::write_svg_polyline(os, v, c.points, c.color, 2, c.dashed);
+  if(!p.analytic.empty()) // dashed, above the extras so that it stays visible where they coincide
+    internal::write_svg_polyline(os, v, p.analytic, analytic_color, 1.5, true);
   if(!p.solution.empty())
     internal::write_svg_polyline(os, v, p.solution, solution_color, 3, false);
   os << "</g>\n";
@@ -282,7 +286,7 @@ inline void write_curve_svg(std::ostream& out, const Svg_curve_plot& plot)
     os << "</g>\n";
   }
 
-  // Legend, top right inside the plot area, on a translucent background.
+  // Legend, in a corner of the plot area (Svg_curve_plot::legend_position), on a translucent background.
   {
     struct Entry
     {
@@ -304,7 +308,10 @@ inline void write_curve_svg(std::ostream& out, const Svg_curve_plot& plot)
       for(const Entry& e : entries)
         longest = std::max(longest, e.label.size());
       const double lw = std::max(120.0, 56 + 7 * static_cast<double>(longest)), lh = 8 + 18 * static_cast<double>(entries.size());
-      const double lx = v.left + v.plot_w - lw - 8, ly = v.top + 8;
+      const bool right = p.legend_position == Svg_curve_plot::TOP_RIGHT || p.legend_position == Svg_curve_plot::BOTTOM_RIGHT;
+      const bool top = p.legend_position == Svg_curve_plot::TOP_RIGHT || p.legend_position == Svg_curve_plot::TOP_LEFT;
+      const double lx = right ? v.left + v.plot_w - lw - 8 : v.left + 8;
+      const double ly = top ? v.top + 8 : v.top + v.plot_h - lh - 8;
       os << "<g id=\"legend\" font-family=\"sans-serif\" font-size=\"12\">\n";
       os << "<rect x=\"" << lx << "\" y=\"" << ly << "\" width=\"" << lw << "\" height=\"" << lh
          << "\" fill=\"white\" fill-opacity=\"0.85\" stroke=\"#808080\" stroke-width=\"0.5\"/>\n";

@@ -1,18 +1,26 @@
 // Copyright (c) 2026 MDCS contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Construction of Line_arrangement_2. The phases, each freeing its temporaries before the next one
-// allocates:
-//  1. select the usable lines (meet the open box, not a duplicate) and rank all slopes exactly;
-//  2. the boundary: where each line enters and leaves the box, the marks, the corners, sorted along
+// Construction of Line_arrangement_2. The phases:
+//  1. select the usable lines (they meet the open box and are not duplicates) and rank all slopes
+//     exactly; the walls are supporting lines too;
+//  2. the boundary: where each line enters and leaves the box, the marks and the corners, sorted along
 //     the walls; these are the first vertices;
-//  3. line by line, the intersections strictly inside the box, sorted along the line by a filtered
-//     key (ties resolved exactly); equal parameters are one vertex. A vertex gets its index on the
-//     lowest-numbered line through it; later lines find that index through a per-line cursor, so no
-//     hashing and no union-find are needed;
-//  4. the edges, numbered line after line (so the edges of one line are consecutive), then the walls;
-//  5. the rotation system (lines through a vertex in slope order) and the faces as cycles of
-//     half-edges.
+//  3. line by line, the intersections strictly inside the box, sorted along the line by a filtered key
+//     (ties resolved exactly); equal parameters are one vertex. A vertex gets its index on the
+//     lowest-numbered line through it, which posts it to the inboxes of the other lines through it (no
+//     hashing, no union-find). Each line appends one *slot* per vertex along it to a workspace that is the final
+//     edge array itself (the edge leaving a slot is that slot, so a line of k + 1 slots has k edges);
+//     the last line through a vertex links the slots of that vertex into a cycle sorted by slope: the
+//     rotation system, since sorting the lines by slope sorts their outgoing directions
+//     counterclockwise (out-edges, angles in (-90, 90], by slope, then reversed in-edges);
+//  4. the faces, without walking face cycles (a chain of dependent cache misses): every bounded face
+//     is born at its leftmost vertex, in the wedge between two consecutive out-edges, and the face
+//     labels propagate along the lower chains (from the in-edge of smallest slope to the out-edge of
+//     largest slope at each vertex) and along the upper chains (the reverse). One pass over the lines
+//     by increasing slope, one by decreasing slope, each reading its sources from lines already done;
+//     the reads are independent, so the memory system overlaps them;
+//  5. compaction of the workspace into the edge array, in place.
 
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_LINE_ARRANGEMENT_CONSTRUCTION_H
 #define CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_LINE_ARRANGEMENT_CONSTRUCTION_H
@@ -35,6 +43,13 @@
 #include <string>
 #include <utility>
 #include <vector>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+#ifdef MDCS_ARR_TIMING
+#include <chrono>
+#include <iostream>
+#endif
 
 namespace CGAL {
 namespace Variational_minimization {
@@ -50,14 +65,26 @@ class Line_arrangement_builder
   static constexpr Index none = (std::numeric_limits<Index>::max)();
   static constexpr Index unset_face = none - 1;
 
-  // Walls are supporting lines too, stored after the m usable input lines.
+  // Walls are supporting lines too, stored after the m usable input lines, in this order.
   enum Wall { BOTTOM = 0, RIGHT = 1, TOP = 2, LEFT = 3 };
   // The four corners are the vertices 0..3.
   enum Corner { BOTTOM_LEFT = 0, BOTTOM_RIGHT = 1, TOP_RIGHT = 2, TOP_LEFT = 3 };
 
-  // Progress units: the line sweep takes the first 800 of 1000, the faces the rest.
+  // While the faces are computed, the `target` field of a workspace slot holds a *link word*: the next
+  // slot at the same vertex in increasing slope order (cyclically), whether that next slot has an
+  // in-edge and an out-edge, whether this slot has the largest slope at its vertex ("wrap"), and whether
+  // the vertex has exactly two slots ("pair", the common case, which needs no further reads).
+  static constexpr int slot_bits = 28;
+  static constexpr Index slot_mask = (Index(1) << slot_bits) - 1;
+  static constexpr Index next_in_bit = Index(1) << 28;
+  static constexpr Index next_out_bit = Index(1) << 29;
+  static constexpr Index wrap_bit = Index(1) << 30;
+  static constexpr Index pair_bit = Index(1) << 31;
+  static constexpr std::size_t slot_limit = std::size_t(1) << slot_bits;
+
+  // Progress units: the sweep takes the first 700 of 1000, the faces the rest.
   static constexpr std::size_t progress_total = 1000;
-  static constexpr std::size_t progress_lines = 800;
+  static constexpr std::size_t progress_sweep = 700;
 
   // A point along a line: enclosing interval of its parameter, the other line, and an auxiliary index.
   struct Keyed
@@ -67,12 +94,30 @@ class Line_arrangement_builder
     Index aux;
   };
 
-  // Where line s meets a line of larger index: filled when s is processed, read once by that line.
+  // A vertex found on line `other`, posted to a line of larger index that passes through it.
   struct Forward
   {
-    Index other;
-    Index vertex;
+    Index other;    // the line of smaller index
+    Index vertex;   // the vertex
+    Index slot;     // the slot of that vertex on line `other`
   };
+
+  // A slot at a vertex, with the slope rank of its line.
+  struct Incidence
+  {
+    Index rank;
+    Index slot;
+    bool in, out;
+  };
+
+  static void prefetch(const void* p)
+  {
+#if defined(__GNUC__) || defined(__clang__)
+    __builtin_prefetch(p);
+#else
+    (void)p;
+#endif
+  }
 
 public:
   Line_arrangement_builder(Arrangement& arr, Progress& progress)
@@ -82,11 +127,28 @@ public:
   void run(const std::vector<double>& left_marks, const std::vector<double>& right_marks)
   {
     check_input(left_marks, right_marks);
+#ifdef MDCS_ARR_TIMING
+    auto now = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
+    double t0 = now();
+#define MDCS_ARR_T(name) { double t1 = now(); std::cerr << name << " " << t1 - t0 << "\n"; t0 = t1; }
+#else
+#define MDCS_ARR_T(name)
+#endif
     select_lines();
     build_boundary(left_marks, right_marks);
+    MDCS_ARR_T("select+boundary");
+    reserve_storage();
+    MDCS_ARR_T("count");
     sweep_lines();
-    build_edges();
+    MDCS_ARR_T("sweep");
+    append_walls();
+    link_boundary();
+    MDCS_ARR_T("walls");
     build_faces();
+    MDCS_ARR_T("faces");
+    compact();
+    MDCS_ARR_T("compact");
+#undef MDCS_ARR_T
     reporter_.finish();
   }
 
@@ -191,14 +253,12 @@ private:
     }
 
     arr_.used_.assign(n, 0);
-    rank_by_input_.assign(n, none);
     for(std::size_t k = 0; k < nc; ++k)
       if(keep[k]) {
         lines_.push_back(cand[k]);
         input_of_.push_back(cand_input[k]);
         rank_.push_back(cand_rank[k]);
         arr_.used_[cand_input[k]] = 1;
-        rank_by_input_[cand_input[k]] = cand_rank[k];
       }
     m_ = Index(lines_.size());
     for(int w = 0; w < 4; ++w) {
@@ -217,7 +277,7 @@ private:
   template <class Group>
   void sort_and_group(const Arr_line& base, std::vector<Keyed>& items, Group group)
   {
-    std::sort(items.begin(), items.end(), [](const Keyed& a, const Keyed& b) { return a.lo < b.lo; });
+    sort_by_lower_end(items);
     const std::size_t count = items.size();
     std::size_t k = 0;
     while(k < count) {
@@ -241,6 +301,48 @@ private:
           }
       }
       k = end;
+    }
+  }
+
+  // Sorts by `lo`: a bucket sort with about one item per bucket between the smallest and the largest
+  // key (the bucket index is monotone in the key, so only the buckets need sorting), which is linear
+  // for the spread-out intersections of random lines; std::sort inside crowded buckets.
+  void sort_by_lower_end(std::vector<Keyed>& items)
+  {
+    auto less = [](const Keyed& a, const Keyed& b) { return a.lo < b.lo; };
+    const std::size_t n = items.size();
+    if(n < 64) {
+      std::sort(items.begin(), items.end(), less);
+      return;
+    }
+    double lo = items[0].lo, hi = items[0].lo;
+    for(const Keyed& k : items) {
+      lo = (std::min)(lo, k.lo);
+      hi = (std::max)(hi, k.lo);
+    }
+    const double scale = double(n) / (hi - lo);
+    if(!(hi > lo) || !std::isfinite(scale)) {
+      std::sort(items.begin(), items.end(), less);
+      return;
+    }
+    auto bucket = [&](double key) { return (std::min)(n - 1, std::size_t((key - lo) * scale)); };
+    bucket_start_.assign(n + 1, 0);
+    for(const Keyed& k : items) ++bucket_start_[bucket(k.lo) + 1];
+    for(std::size_t b = 0; b < n; ++b) bucket_start_[b + 1] += bucket_start_[b];
+    sort_buffer_.resize(n);
+    for(const Keyed& k : items) sort_buffer_[bucket_start_[bucket(k.lo)]++] = k;
+    items.swap(sort_buffer_);
+    // bucket_start_[b] is now the end of bucket b.
+    std::size_t begin = 0;
+    for(std::size_t b = 0; b < n; ++b) {
+      const std::size_t end = bucket_start_[b];
+      if(end - begin > 32)
+        std::sort(items.begin() + begin, items.begin() + end, less);
+      else
+        for(std::size_t i = begin + 1; i < end; ++i)
+          for(std::size_t j = i; j > begin && items[j].lo < items[j - 1].lo; --j)
+            std::swap(items[j], items[j - 1]);
+      begin = end;
     }
   }
 
@@ -369,6 +471,7 @@ private:
       std::vector<Keyed>().swap(items[w]);
     }
     lines_.resize(m_ + 4);   // the mark lines are no longer needed
+    boundary_vertices_ = arr_.points_.size();
 
     // Parameter intervals of the entry and exit points: the bounds of the in-box filter.
     in_lo_.resize(m_); in_hi_.resize(m_); out_lo_.resize(m_); out_hi_.resize(m_);
@@ -391,54 +494,124 @@ private:
 
   // ------------------------------------------------------------------------------------------------
   // Phase 3: the interior intersections, line by line.
+
+  // The workspace and the points are allocated once, from an upper bound on the number of vertices:
+  // one per pair of lines that may cross inside the box (the filter alone, no exact arithmetic). A
+  // reserved but untouched tail costs address space only, not memory.
+  void reserve_storage()
+  {
+    std::size_t pairs = 0;
+    for(Index s = 0; s < m_; ++s) {
+      const Arr_line& l = lines_[s];
+      for(Index j = s + 1; j < m_; ++j) {
+        double lo, hi;
+        if(!approx_param(l, lines_[j], lo, hi) || !(hi <= in_lo_[s] || lo >= out_hi_[s]))
+          ++pairs;
+      }
+    }
+    std::size_t slots = 2 * pairs + 2 * std::size_t(m_);
+    for(int w = 0; w < 4; ++w) slots += wall_seq_[w].size();
+    arr_.edges_.clear();
+    arr_.edges_.reserve((std::min)(slots, slot_limit));
+    arr_.points_.reserve(arr_.points_.size() + pairs);
+    advise_huge_pages(arr_.edges_.data(), arr_.edges_.capacity() * sizeof(Edge));
+    advise_huge_pages(arr_.points_.data(), arr_.points_.capacity() * sizeof(Point));
+  }
+
+  // Page faults on the large fresh arrays are a good part of the construction time; on Linux, ask for
+  // transparent huge pages (a hint: nothing changes where they are disabled).
+  static void advise_huge_pages(void* data, std::size_t bytes)
+  {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if(bytes < (std::size_t(8) << 20)) return;
+    const std::uintptr_t page = 4096;
+    const std::uintptr_t begin = (reinterpret_cast<std::uintptr_t>(data) + page - 1) & ~(page - 1);
+    const std::uintptr_t end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(page - 1);
+    if(end > begin)
+      (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+    (void)data;
+    (void)bytes;
+#endif
+  }
+
+  void push_slot(Index vertex, Index line, typename Arrangement::Edge_kind kind)
+  {
+    std::vector<Edge>& ws = arr_.edges_;
+    if(ws.size() >= slot_limit)
+      throw std::length_error("MDCS: too many edges for Line_arrangement_2 (at most 2^28 - number of lines)");
+    ws.push_back(Edge{ vertex, 0, line, kind, unset_face, unset_face });
+  }
+
+  // Links the slots of one vertex into a cycle by increasing slope rank.
+  void link_cycle(std::vector<Incidence>& inc)
+  {
+    std::sort(inc.begin(), inc.end(), [](const Incidence& a, const Incidence& b) { return a.rank < b.rank; });
+    const std::size_t k = inc.size();
+    CGAL_assertion(k >= 1);
+    for(std::size_t i = 0; i < k; ++i) {
+      // Lines through one point have distinct slopes (parallel lines never meet, duplicates are gone).
+      CGAL_assertion(i + 1 == k || inc[i].rank < inc[i + 1].rank);
+      const Incidence& next = inc[i + 1 == k ? 0 : i + 1];
+      arr_.edges_[inc[i].slot].target = next.slot | (next.in ? next_in_bit : 0) | (next.out ? next_out_bit : 0) |
+                                        (i + 1 == k ? wrap_bit : 0) | (k == 2 ? pair_bit : 0);
+    }
+  }
+
   void sweep_lines()
   {
     const CGAL::Bbox_2& b = arr_.box_;
     const double scale_x = b.xmax() - b.xmin(), scale_y = b.ymax() - b.ymin();
-    std::vector<std::vector<Forward>> forward(m_);
-    std::vector<Index> cursor(m_, 0);
+    std::vector<Edge>& ws = arr_.edges_;
+    // inbox[j]: the vertices on line j already found by lines of smaller index, in increasing order of
+    // those lines; line j reads them all, then frees them.
+    std::vector<std::vector<Forward>> inbox(m_);
     std::vector<Keyed> items;
-    seq_offset_.assign(m_ + 1, 0);
-    seq_.reserve(std::size_t(2) * m_ + 16);
+    std::vector<std::pair<Index, Index>> known;   // for lines of smaller index: (vertex, slot)
+    std::vector<Incidence> inc;
+    slot_offset_.assign(std::size_t(m_) + 5, 0);
 
     for(Index s = 0; s < m_; ++s) {
       const Arr_line& l = lines_[s];
+      const Index line = input_of_[s];
       items.clear();
-      // Lines of smaller index: exactly those whose cursor points at s; the vertex is already known.
-      for(Index j = 0; j < s; ++j) {
-        std::vector<Forward>& f = forward[j];
-        if(cursor[j] < f.size() && f[cursor[j]].other == s) {
-          double lo, hi;
-          param_interval(l, lines_[j], lo, hi);
-          items.push_back(Keyed{ lo, hi, j, f[cursor[j]].vertex });
-          if(++cursor[j] == f.size())
-            std::vector<Forward>().swap(f);   // fully consumed
-        }
+      known.clear();
+      // Lines of smaller index: the vertex is already known.
+      for(const Forward& f : inbox[s]) {
+        double lo, hi;
+        param_interval(l, lines_[f.other], lo, hi);
+        items.push_back(Keyed{ lo, hi, f.other, Index(known.size()) });
+        known.emplace_back(f.vertex, f.slot);
+        prefetch(ws.data() + f.slot);   // its link word is written when the vertex is closed
       }
+      std::vector<Forward>().swap(inbox[s]);
       // Lines of larger index: test exactly whether they cross s strictly inside the box.
-      std::vector<Forward>& fs = forward[s];
       for(Index j = s + 1; j < m_; ++j) {
         const Arr_line& o = lines_[j];
         double lo, hi;
         if(!approx_param(l, o, lo, hi)) {
           if(exact_cross_sign(l, o) == CGAL::ZERO)
-            continue;   // parallel (distinct, since duplicates are gone)
+            continue;   // parallel (and distinct, since duplicates are gone)
           param_interval(l, o, lo, hi);
         }
-        if(strictly_inside(s, j, lo, hi)) {
-          items.push_back(Keyed{ lo, hi, j, Index(fs.size()) });
-          fs.push_back(Forward{ j, none });
-        }
+        if(strictly_inside(s, j, lo, hi))
+          items.push_back(Keyed{ lo, hi, j, none });
       }
 
-      seq_.push_back(entry_vertex_[s]);
+      slot_offset_[s] = Index(ws.size());
+      push_slot(entry_vertex_[s], line, Arrangement::LINE_EDGE);
       sort_and_group(l, items, [&](std::size_t first, std::size_t last) {
+        const Index slot = Index(ws.size());
         Index v = none;
-        for(std::size_t k = first; k < last; ++k)
+        bool last_line = true;   // s is the line of largest index through the vertex
+        for(std::size_t k = first; k < last; ++k) {
           if(items[k].other < s) {
-            CGAL_assertion(v == none || v == items[k].aux);
-            v = items[k].aux;
+            CGAL_assertion(v == none || v == known[items[k].aux].first);
+            v = known[items[k].aux].first;
+          } else {
+            last_line = false;
           }
+        }
         if(v == none) {
           double x, y;
           intersection_point(l, lines_[items[first].other], scale_x, scale_y, x, y);
@@ -452,197 +625,253 @@ private:
           }
           v = add_vertex(x, y);
         }
+        push_slot(v, line, Arrangement::LINE_EDGE);
         for(std::size_t k = first; k < last; ++k)
           if(items[k].other > s)
-            fs[items[k].aux].vertex = v;
-        seq_.push_back(v);
+            inbox[items[k].other].push_back(Forward{ s, v, slot });
+        if(last_line && last - first == 1) {
+          // The common case: a vertex of exactly two lines.
+          const Index other_slot = known[items[first].aux].second;
+          const bool s_steeper = rank_[s] > rank_[items[first].other];
+          CGAL_assertion(rank_[s] != rank_[items[first].other]);
+          const Index both = next_in_bit | next_out_bit | pair_bit;
+          ws[slot].target = other_slot | both | (s_steeper ? wrap_bit : 0);
+          ws[other_slot].target = slot | both | (s_steeper ? 0 : wrap_bit);
+        } else if(last_line) {
+          inc.clear();
+          inc.push_back(Incidence{ rank_[s], slot, true, true });
+          for(std::size_t k = first; k < last; ++k)
+            inc.push_back(Incidence{ rank_[items[k].other], known[items[k].aux].second, true, true });
+          link_cycle(inc);
+        }
       });
-      seq_.push_back(exit_vertex_[s]);
-      seq_offset_[s + 1] = Index(seq_.size());
-      if(seq_.size() >= std::size_t(1) << 30)
-        throw std::length_error("MDCS: too many edges for Line_arrangement_2");
-      reporter_(std::size_t(s + 1) * progress_lines / (m_ + 1));
+      push_slot(exit_vertex_[s], line, Arrangement::LINE_EDGE);
+      reporter_(std::size_t(s + 1) * progress_sweep / (std::size_t(m_) + 1));
     }
-#ifndef CGAL_NO_ASSERTIONS
-    for(Index j = 0; j < m_; ++j)
-      CGAL_assertion(cursor[j] == forward[j].size() || forward[j].empty());
-#endif
-    std::vector<Keyed>().swap(items);
     std::vector<double>().swap(in_lo_); std::vector<double>().swap(in_hi_);
     std::vector<double>().swap(out_lo_); std::vector<double>().swap(out_hi_);
   }
 
-  // ------------------------------------------------------------------------------------------------
-  // Phase 4: edges. The edges of a line (and of a wall) are consecutive, which the rotation system uses.
-  void build_edges()
+  // The walls become four more lines of slots.
+  void append_walls()
   {
-    std::size_t count = seq_.size() - m_;
-    for(int w = 0; w < 4; ++w) count += wall_seq_[w].size() - 1;
-    if(count >= (std::size_t(1) << 30))
-      throw std::length_error("MDCS: too many edges for Line_arrangement_2");
-    std::vector<Edge>& edges = arr_.edges_;
-    edges.clear();
-    edges.reserve(count);
-    for(Index s = 0; s < m_; ++s)
-      for(Index k = seq_offset_[s]; k + 1 < seq_offset_[s + 1]; ++k)
-        edges.push_back(Edge{ seq_[k], seq_[k + 1], input_of_[s], Arrangement::LINE_EDGE, unset_face, unset_face });
-    std::vector<Index>().swap(seq_);
-    std::vector<Index>().swap(seq_offset_);
-
-    // Walls: the outside of the box is the exterior face (null_index).
     static const typename Arrangement::Edge_kind kind[4] = { Arrangement::BOTTOM_WALL, Arrangement::RIGHT_WALL,
                                                             Arrangement::TOP_WALL, Arrangement::LEFT_WALL };
     for(int w = 0; w < 4; ++w) {
-      std::vector<Index>& out = arr_.wall_edges_[std::size_t(kind[w]) - 1];
-      out.clear();
-      const std::vector<Index>& seq = wall_seq_[w];
-      // Outside = below the floor, right of the right wall (both on the right), above the ceiling and
-      // left of the left wall (on the left).
-      const bool outside_left = (w == TOP || w == LEFT);
-      for(std::size_t k = 0; k + 1 < seq.size(); ++k) {
-        out.push_back(Index(edges.size()));
-        edges.push_back(Edge{ seq[k], seq[k + 1], Arrangement::null_index, kind[w],
-                              outside_left ? Arrangement::null_index : unset_face,
-                              outside_left ? unset_face : Arrangement::null_index });
-      }
-      std::vector<Index>().swap(wall_seq_[w]);
+      slot_offset_[m_ + w] = Index(arr_.edges_.size());
+      for(Index v : wall_seq_[w])
+        push_slot(v, Arrangement::null_index, kind[w]);
     }
-    CGAL_assertion(edges.size() == count);
+    slot_offset_[m_ + 4] = Index(arr_.edges_.size());
   }
 
-  // Slope rank of the supporting line of an edge.
-  Index edge_rank(Index e) const
+  // The rotation system at the boundary vertices: the walls and the lines entering or leaving there.
+  void link_boundary()
   {
-    const Edge& ed = arr_.edges_[e];
-    switch(ed.kind) {
-      case Arrangement::BOTTOM_WALL: return rank_[wall_line(BOTTOM)];
-      case Arrangement::RIGHT_WALL: return rank_[wall_line(RIGHT)];
-      case Arrangement::TOP_WALL: return rank_[wall_line(TOP)];
-      case Arrangement::LEFT_WALL: return rank_[wall_line(LEFT)];
-      default: return rank_by_input_[ed.line];
+    const std::size_t nb = boundary_vertices_;
+    std::vector<Index> offset(nb + 1, 0);
+    std::vector<Incidence> all;
+    auto for_each_boundary_slot = [&](auto f) {
+      for(Index s = 0; s < m_ + 4; ++s) {
+        const Index first = slot_offset_[s], last = slot_offset_[s + 1] - 1;
+        if(s < m_) {
+          f(first, Incidence{ rank_[s], first, false, true });
+          f(last, Incidence{ rank_[s], last, true, false });
+        } else {
+          for(Index g = first; g <= last; ++g)
+            f(g, Incidence{ rank_[s], g, g > first, g < last });
+        }
+      }
+    };
+    for_each_boundary_slot([&](Index g, const Incidence&) { ++offset[arr_.edges_[g].source + 1]; });
+    for(std::size_t v = 0; v < nb; ++v) offset[v + 1] += offset[v];
+    all.resize(offset[nb]);
+    {
+      std::vector<Index> fill(offset.begin(), offset.end() - 1);
+      for_each_boundary_slot([&](Index g, const Incidence& i) { all[fill[arr_.edges_[g].source]++] = i; });
     }
+    std::vector<Incidence> inc;
+    for(std::size_t v = 0; v < nb; ++v) {
+      inc.assign(all.begin() + offset[v], all.begin() + offset[v + 1]);
+      link_cycle(inc);
+    }
+    std::vector<Index>().swap(entry_vertex_);
+    std::vector<Index>().swap(exit_vertex_);
+    for(int w = 0; w < 4; ++w) std::vector<Index>().swap(wall_seq_[w]);
   }
 
   // ------------------------------------------------------------------------------------------------
-  // Phase 5: the rotation system and the faces.
-  //
-  // At a vertex, each supporting line through it has an out-edge (leaving to the right, or upwards),
-  // an in-edge (arriving from the left, or from below), or both. An incidence packs
-  //   (x << 2) | (has_out << 1) | has_in,  x = the out-edge if any, else the in-edge;
-  // with both, the in-edge is x - 1 because the edges of a line are consecutive. Sorting the lines by
-  // slope sorts the outgoing directions counterclockwise: the out-edges (angles in (-90, 90]) by rank,
-  // then the reversed in-edges (angles in (90, 270]) by rank.
-  static Index in_edge_of(Index inc) { return (inc & 2) ? (inc >> 2) - 1 : (inc >> 2); }
+  // Phase 4: the faces. left_face ("up" for a left-to-right edge) and right_face ("down") of the edge
+  // leaving each slot.
 
-  void build_rotation_system()
+  // The slots at the vertex of slot g in increasing slope order; returns the position of g.
+  std::size_t gather(Index g, bool g_in, bool g_out, std::vector<Incidence>& buf) const
   {
-    const std::vector<Edge>& edges = arr_.edges_;
-    const std::size_t nv = arr_.points_.size(), ne = edges.size();
-    inc_offset_.assign(nv + 1, 0);
-    // A run of consecutive edges on one supporting line: edge e starts a run if e - 1 is on another line.
-    auto starts_run = [&](std::size_t e) {
-      return e == 0 || edges[e - 1].kind != edges[e].kind || edges[e - 1].line != edges[e].line ||
-             edges[e - 1].target != edges[e].source;
-    };
-    auto ends_run = [&](std::size_t e) { return e + 1 == ne || starts_run(e + 1); };
-    for(std::size_t e = 0; e < ne; ++e) {
-      ++inc_offset_[edges[e].source + 1];
-      if(ends_run(e)) ++inc_offset_[edges[e].target + 1];
+    const std::vector<Edge>& ws = arr_.edges_;
+    buf.clear();
+    Index word = ws[g].target;
+    if(word & pair_bit) {
+      const Incidence self{ 0, g, g_in, g_out };
+      const Incidence other{ 0, word & slot_mask, (word & next_in_bit) != 0, (word & next_out_bit) != 0 };
+      if(word & wrap_bit) { buf.push_back(other); buf.push_back(self); return 1; }
+      buf.push_back(self); buf.push_back(other); return 0;
     }
-    for(std::size_t v = 0; v < nv; ++v) inc_offset_[v + 1] += inc_offset_[v];
-    inc_.assign(inc_offset_[nv], 0);
-    {
-      std::vector<Index> fill(inc_offset_.begin(), inc_offset_.end() - 1);
-      for(std::size_t e = 0; e < ne; ++e) {
-        const Index has_in = starts_run(e) ? 0 : 1;
-        inc_[fill[edges[e].source]++] = (Index(e) << 2) | 2 | has_in;
-        if(ends_run(e)) inc_[fill[edges[e].target]++] = (Index(e) << 2) | 1;
-      }
+    // Walk the cycle from g; remember where the largest slope is, then rotate to start after it.
+    buf.push_back(Incidence{ 0, g, g_in, g_out });
+    std::size_t wrap_at = (word & wrap_bit) ? 0 : std::size_t(-1);
+    for(;;) {
+      const Index y = word & slot_mask;
+      if(y == g) break;
+      buf.push_back(Incidence{ 0, y, (word & next_in_bit) != 0, (word & next_out_bit) != 0 });
+      word = ws[y].target;
+      if(word & wrap_bit) wrap_at = buf.size() - 1;
+      CGAL_assertion(buf.size() <= ws.size());
     }
-    for(std::size_t v = 0; v < nv; ++v) {
-      Index* first = inc_.data() + inc_offset_[v];
-      Index* last = inc_.data() + inc_offset_[v + 1];
-      CGAL_assertion(last - first >= 1);   // a mark alone on a wall has one (the wall)
-      if(last - first == 2) {
-        if(edge_rank(first[1] >> 2) < edge_rank(first[0] >> 2)) std::swap(first[0], first[1]);
-      } else {
-        std::sort(first, last, [&](Index a, Index c) { return edge_rank(a >> 2) < edge_rank(c >> 2); });
-      }
-#ifndef CGAL_NO_ASSERTIONS
-      // Lines through one point have distinct slopes (parallel lines never meet, duplicates are gone).
-      for(Index* p = first; p + 1 < last; ++p)
-        CGAL_assertion(edge_rank(p[0] >> 2) < edge_rank(p[1] >> 2));
-#endif
-    }
+    CGAL_assertion(wrap_at != std::size_t(-1));
+    const std::size_t start = (wrap_at + 1) % buf.size();
+    std::rotate(buf.begin(), buf.begin() + start, buf.end());
+    return (buf.size() - start) % buf.size();
   }
-
-  // Half-edge 2e runs along e (its face is left_face), 2e + 1 against it (right_face). The next
-  // half-edge of the face on the left is the clockwise predecessor of the twin around the target.
-  Index next_halfedge(Index h) const
-  {
-    const Index e = h >> 1;
-    const bool along = (h & 1) == 0;
-    const Edge& ed = arr_.edges_[e];
-    const Index v = along ? ed.target : ed.source;
-    const Index* b = inc_.data() + inc_offset_[v];
-    const Index count = inc_offset_[v + 1] - inc_offset_[v];
-    Index a = 0;
-    if(along) {   // e is the in-edge of its line at v; the twin is that line's reversed in-edge
-      while(a < count && !((b[a] & 1) && in_edge_of(b[a]) == e)) ++a;
-    } else {      // e is the out-edge; the twin is that out-edge
-      while(a < count && !((b[a] & 2) && (b[a] >> 2) == e)) ++a;
-    }
-    CGAL_assertion(a < count);
-    // Cyclic order: out-edges by rank, then reversed in-edges by rank.
-    const Index twin_flag = along ? 1 : 2, other_flag = along ? 2 : 1;
-    auto half = [&](Index inc, Index flag) { return flag == 2 ? 2 * (inc >> 2) : 2 * in_edge_of(inc) + 1; };
-    for(Index k = a; k-- > 0;)
-      if(b[k] & twin_flag) return half(b[k], twin_flag);
-    for(Index k = count; k-- > 0;)
-      if(b[k] & other_flag) return half(b[k], other_flag);
-    for(Index k = count; k-- > 0;)
-      if(b[k] & twin_flag) return half(b[k], twin_flag);
-    CGAL_assertion(false);
-    return h;
-  }
-
-  Index& face_of(Index h) { return (h & 1) ? arr_.edges_[h >> 1].right_face : arr_.edges_[h >> 1].left_face; }
 
   void build_faces()
   {
-    build_rotation_system();
-#ifdef MDCS_ARR_DEBUG
-    for(std::size_t e = 0; e < arr_.edges_.size(); ++e) { const Edge& d = arr_.edges_[e]; std::cerr << "e" << e << ": " << d.source << "->" << d.target << " line " << d.line << " kind " << d.kind << " L " << d.left_face << " R " << d.right_face << "\n"; }
-    for(std::size_t v = 0; v + 1 < inc_offset_.size(); ++v) { std::cerr << "v" << v << " (" << arr_.points_[v] << "):"; for(Index k = inc_offset_[v]; k < inc_offset_[v+1]; ++k) std::cerr << " " << (inc_[k] >> 2) << "/" << (inc_[k] & 3); std::cerr << "\n"; }
-#endif
-    std::vector<Edge>& edges = arr_.edges_;
-    const std::size_t ne = edges.size();
+    std::vector<Edge>& ws = arr_.edges_;
+    const Index lines = m_ + 4;
+    // Exterior sides of the walls: below the floor, right of the right wall, above the ceiling, left
+    // of the left wall. Only the corner (xmin, ymin), which has no in-edge, relies on this preset; the
+    // propagation reproduces it everywhere else.
+    for(Index g = slot_offset_[m_ + BOTTOM]; g < slot_offset_[m_ + BOTTOM + 1]; ++g) ws[g].right_face = Arrangement::null_index;
+    for(Index g = slot_offset_[m_ + RIGHT]; g < slot_offset_[m_ + RIGHT + 1]; ++g) ws[g].right_face = Arrangement::null_index;
+    for(Index g = slot_offset_[m_ + TOP]; g < slot_offset_[m_ + TOP + 1]; ++g) ws[g].left_face = Arrangement::null_index;
+    for(Index g = slot_offset_[m_ + LEFT]; g < slot_offset_[m_ + LEFT + 1]; ++g) ws[g].left_face = Arrangement::null_index;
+
+    std::vector<Index> order(lines);
+    for(Index s = 0; s < lines; ++s) order[s] = s;
+    std::stable_sort(order.begin(), order.end(), [&](Index a, Index c) { return rank_[a] < rank_[c]; });
+    std::vector<Incidence> buf;
     Index faces = 0;
-    const std::size_t report_step = ne / 50 + 1;
-    for(std::size_t e = 0; e < ne; ++e) {
-      for(Index side = 0; side < 2; ++side) {
-        const Index h = Index(2 * e + side);
-        if(face_of(h) != unset_face) continue;
-        // Guard against an endless walk: a bounded face has at most ne half-edges.
-        std::size_t steps = 0;
-        Index x = h;
-        do {
-          CGAL_assertion(face_of(x) == unset_face);
-          face_of(x) = faces;
-          x = next_halfedge(x);
-          if(++steps > ne)
-            throw std::logic_error("MDCS: internal error, a face of Line_arrangement_2 does not close");
-        } while(x != h);
-        ++faces;
+    const std::size_t total = 2 * std::size_t(lines);
+    std::size_t done = 0;
+
+    // Prefetching: the face of a slot depends on a slot at the same vertex on another line, a cache miss
+    // that is known from the link word long before it is needed.
+    constexpr Index distance = 16;
+    auto prefetch_ahead = [&](Index g, Index last) {
+      if(g + distance < last) {
+        const Index y = ws[g + distance].target & slot_mask;
+        prefetch(ws.data() + y);
+        if(y > 0) prefetch(ws.data() + (y - 1));   // the in-edge of y
       }
-      if(e % report_step == 0)
-        reporter_(progress_lines + e * (progress_total - progress_lines) / (ne + 1));
+    };
+
+    // Up pass, by increasing slope: the face above an out-edge is new when a steeper out-edge leaves
+    // the same vertex (the wedge between them is born here); otherwise it continues the face above the
+    // in-edge of smallest slope at the vertex.
+    auto new_face = [&]() {
+      if(faces >= unset_face)
+        throw std::length_error("MDCS: too many faces for Line_arrangement_2");
+      return faces++;
+    };
+    for(Index s : order) {
+      const Index first = slot_offset_[s], last = slot_offset_[s + 1] - 1;
+      for(Index g = first; g < last; ++g) {
+        prefetch_ahead(g, last);
+        const bool g_in = g > first;
+        const Index word = ws[g].target;
+        Index f = unset_face;
+        if(word & pair_bit) {
+          const Index y = word & slot_mask;
+          const bool y_in = (word & next_in_bit) != 0, y_out = (word & next_out_bit) != 0;
+          if(!(word & wrap_bit) && y_out)   // y is steeper and leaves: g is the lower side of a new face
+            f = new_face();
+          else {
+            // The in-edge of smallest slope: [y, g] when g is the steeper, else [g, y].
+            const Index l_first = (word & wrap_bit) ? (y_in ? y : (g_in ? g : none)) : (g_in ? g : (y_in ? y : none));
+            if(l_first != none) f = ws[l_first - 1].left_face;
+          }
+        } else {
+          const std::size_t a = gather(g, g_in, true, buf);
+          bool steeper_out = false;
+          for(std::size_t k = a + 1; k < buf.size(); ++k) steeper_out = steeper_out || buf[k].out;
+          if(steeper_out)
+            f = new_face();
+          else
+            for(std::size_t k = 0; k < buf.size(); ++k)
+              if(buf[k].in) { f = ws[buf[k].slot - 1].left_face; break; }
+        }
+        if(f != unset_face) {
+          CGAL_assertion(ws[g].left_face == unset_face || ws[g].left_face == f);
+          ws[g].left_face = f;
+        }
+        CGAL_assertion(ws[g].left_face != unset_face);
+      }
+      reporter_(progress_sweep + (++done) * (progress_total - progress_sweep) / (total + 1));
     }
-    std::vector<Index>().swap(inc_);
-    std::vector<Index>().swap(inc_offset_);
+    // Down pass, by decreasing slope: the face below an out-edge is the face above the next out-edge of
+    // smaller slope (the wedge between them); without one, it continues the face below the in-edge of
+    // largest slope.
+    for(std::size_t i = lines; i-- > 0;) {
+      const Index s = order[i];
+      const Index first = slot_offset_[s], last = slot_offset_[s + 1] - 1;
+      for(Index g = first; g < last; ++g) {
+        prefetch_ahead(g, last);
+        const bool g_in = g > first;
+        const Index word = ws[g].target;
+        Index f = unset_face;
+        if(word & pair_bit) {
+          const Index y = word & slot_mask;
+          const bool y_in = (word & next_in_bit) != 0, y_out = (word & next_out_bit) != 0;
+          if((word & wrap_bit) && y_out)   // y is less steep and leaves
+            f = ws[y].left_face;
+          else {
+            // The in-edge of largest slope: [y, g] when g is the steeper, else [g, y].
+            const Index l_last = (word & wrap_bit) ? (g_in ? g : (y_in ? y : none)) : (y_in ? y : (g_in ? g : none));
+            if(l_last != none) f = ws[l_last - 1].right_face;
+          }
+        } else {
+          const std::size_t a = gather(g, g_in, true, buf);
+          for(std::size_t k = a; k-- > 0;)
+            if(buf[k].out) { f = ws[buf[k].slot].left_face; break; }
+          if(f == unset_face)
+            for(std::size_t k = buf.size(); k-- > 0;)
+              if(buf[k].in) { f = ws[buf[k].slot - 1].right_face; break; }
+        }
+        if(f != unset_face) {
+          CGAL_assertion(ws[g].right_face == unset_face || ws[g].right_face == f);
+          ws[g].right_face = f;
+        }
+        CGAL_assertion(ws[g].right_face != unset_face);
+      }
+      reporter_(progress_sweep + (++done) * (progress_total - progress_sweep) / (total + 1));
+    }
     arr_.number_of_faces_ = faces;
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Phase 5: the slot of position k on a line becomes the edge from it to position k + 1. Edges move
+  // only to lower indices, so this is done in place.
+  void compact()
+  {
+    std::vector<Edge>& ws = arr_.edges_;
+    std::size_t out = 0;
+    for(Index s = 0; s < m_ + 4; ++s) {
+      std::vector<Index>* wall = nullptr;
+      if(s >= m_) {
+        const typename Arrangement::Edge_kind kind = ws[slot_offset_[s]].kind;
+        wall = &arr_.wall_edges_[std::size_t(kind) - 1];
+        wall->clear();
+      }
+      for(Index g = slot_offset_[s]; g + 1 < slot_offset_[s + 1]; ++g) {
+        Edge e = ws[g];
+        e.target = ws[g + 1].source;
+        if(wall) wall->push_back(Index(out));
+        ws[out++] = e;
+      }
+    }
+    ws.resize(out);
+    std::vector<Index>().swap(slot_offset_);
     // Euler's formula for the connected plane graph (the walls connect everything): V - E + (F + 1) = 2.
-    CGAL_assertion(arr_.points_.size() + faces == ne + 1);
+    CGAL_assertion(arr_.points_.size() + arr_.number_of_faces_ == ws.size() + 1);
   }
 
   Arrangement& arr_;
@@ -651,15 +880,15 @@ private:
   std::vector<Arr_line> lines_;        // [0, m): usable input lines, then the 4 walls
   std::vector<Index> input_of_;        // input index of lines_[s], s < m
   std::vector<Index> rank_;            // slope rank of lines_[s], s < m + 4
-  std::vector<Index> rank_by_input_;   // slope rank by input index (none if unused)
   Index m_ = 0;
+  std::size_t boundary_vertices_ = 0;  // the boundary vertices are 0 .. boundary_vertices_ - 1
 
   std::vector<Index> entry_vertex_, exit_vertex_, entry_wall_, exit_wall_;
   std::vector<double> in_lo_, in_hi_, out_lo_, out_hi_;
   std::array<std::vector<Index>, 4> wall_seq_;
-
-  std::vector<Index> seq_, seq_offset_;   // vertices along each line
-  std::vector<Index> inc_, inc_offset_;   // rotation system
+  std::vector<Index> slot_offset_;     // slots of line s (then of the walls): [offset[s], offset[s + 1])
+  std::vector<Keyed> sort_buffer_;
+  std::vector<std::size_t> bucket_start_;
 };
 
 } // namespace internal
