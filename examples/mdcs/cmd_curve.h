@@ -123,8 +123,8 @@ inline Curve_settings parse_curve_settings(const Options& o)
   return s;
 }
 
-// Density of Gaussian blobs on the unit square (mapped onto the box): low channels between high blobs give
-// the weighted length many local minima.
+// Density of Gaussian blobs on the unit square (mapped onto the box) over a valley along mid-height: the
+// channels between the blobs give the weighted length many local minima.
 struct Blob_density
 {
   CGAL::Bbox_2 box;
@@ -140,7 +140,8 @@ struct Blob_density
   double operator()(double x, double f) const
   {
     const double u = (x - box.xmin()) / (box.xmax() - box.xmin()), v = (f - box.ymin()) / (box.ymax() - box.ymin());
-    double rho = 0.15;
+    // Cheap in a band around mid-height, so that the optimum must pass between the blobs, not around them.
+    double rho = 0.15 + 6 * (v - 0.5) * (v - 0.5);
     for(const auto& b : blobs) rho += b[2] * std::exp(-((u - b[0]) * (u - b[0]) + (v - b[1]) * (v - b[1])) / (2 * 0.07 * 0.07));
     return rho;
   }
@@ -276,7 +277,8 @@ Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& pro
     plot.extra_curves.push_back(c);
   }
   std::ostringstream title;
-  title << s.functional << ": ";
+  if(s.functional == "catenoid") title << "surface of rotation, R = " << s.radius << ": ";
+  else title << s.functional << ": ";
   if(s.grid == "random") title << s.lines << " random lines";
   else if(s.grid == "regular") title << "regular grid C_" << s.n;
   else title << "C_" << s.n << "^pl";

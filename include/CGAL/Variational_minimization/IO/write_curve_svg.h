@@ -93,6 +93,8 @@ struct Svg_curve_plot
   double margin = 60;
   /// Same scale on both axes (the plot area shrinks in one direction), so slopes look right.
   bool preserve_aspect_ratio = true;
+  /// Axis labels.
+  std::string x_label = "x", y_label = "f";
   /// Corner of the plot area that holds the legend.
   enum Legend_position { TOP_RIGHT, BOTTOM_RIGHT, TOP_LEFT, BOTTOM_LEFT };
   /// See `Legend_position`.
@@ -276,13 +278,13 @@ inline void write_curve_svg(std::ostream& out, const Svg_curve_plot& plot)
     os << "<text x=\"" << right << "\" y=\"" << bottom + 16 << "\" text-anchor=\"end\">" << label(p.xmax)
        << "</text>\n";
     os << "<text x=\"" << v.left + 0.5 * v.plot_w << "\" y=\"" << bottom + 16
-       << "\" text-anchor=\"middle\" font-style=\"italic\">x</text>\n";
+       << "\" text-anchor=\"middle\" font-style=\"italic\">" << internal::svg_escape(p.x_label) << "</text>\n";
     os << "<text x=\"" << v.left - 6 << "\" y=\"" << bottom << "\" text-anchor=\"end\">" << label(p.ymin)
        << "</text>\n";
     os << "<text x=\"" << v.left - 6 << "\" y=\"" << v.top + 12 << "\" text-anchor=\"end\">" << label(p.ymax)
        << "</text>\n";
     os << "<text x=\"" << v.left - 6 << "\" y=\"" << v.top + 0.5 * v.plot_h
-       << "\" text-anchor=\"end\" font-style=\"italic\">f</text>\n";
+       << "\" text-anchor=\"end\" font-style=\"italic\">" << internal::svg_escape(p.y_label) << "</text>\n";
     os << "</g>\n";
   }
 
