@@ -298,7 +298,8 @@ TEST_CASE("pseudoflow: capacities from 1e-12 to 1e12 terminate with a minimum cu
     std::uint32_t id = 0;
     for(std::uint32_t k = 0; k < 3 * n; ++k) {
       const auto u = Network::Node_index(rng() % n), v = Network::Node_index(rng() % n);
-      if(u != v) network.add_facet(u, v, std::pow(10.0, exponent(rng)), k % 4 == 0 ? inf : std::pow(10.0, exponent(rng)), id++);
+      const bool infinite = trial % 2 == 0 && k % 4 == 0;
+      if(u != v) network.add_facet(u, v, std::pow(10.0, exponent(rng)), infinite ? inf : std::pow(10.0, exponent(rng)), id++);
     }
     network.add_source_facet(0, std::pow(10.0, exponent(rng)), id++);
     network.add_source_facet(Network::Node_index(rng() % n), std::pow(10.0, exponent(rng)), id++);
@@ -306,13 +307,16 @@ TEST_CASE("pseudoflow: capacities from 1e-12 to 1e12 terminate with a minimum cu
     network.add_sink_facet(Network::Node_index(rng() % n), std::pow(10.0, exponent(rng)), id++);
     const auto expected = enumerate(network);
     const auto r = MC::solve_min_cut(network, MC::Pseudoflow_max_flow());
+    // Flows of the largest capacities (M included) pass through the nodes, so the cut is optimal
+    // only up to their rounding: about epsilon times M (see the precision note of solve_min_cut;
+    // push-relabel misses the optimum by as much). Below that, values of 1e-12 are noise.
+    const double tolerance = 1e-12 * MC::Max_flow_problem<double>(network).infinite_capacity();
     INFO("trial " << trial);
     if(expected.first == inf) {
       CHECK_FALSE(r.is_finite);
     } else {
       REQUIRE(r.is_finite);
-      // Optimal up to rounding of the capacities involved.
-      CHECK(r.value <= expected.first * (1 + 1e-9));
+      CHECK(r.value <= expected.first + tolerance);
     }
   }
   // A long grid with the same spread, real-valued: it must simply finish with a valid optimum.
@@ -333,7 +337,7 @@ TEST_CASE("pseudoflow: capacities from 1e-12 to 1e12 terminate with a minimum cu
   const auto pr = MC::solve_min_cut(network, MC::Push_relabel_max_flow());
   const auto pf = MC::solve_min_cut(network, MC::Pseudoflow_max_flow());
   REQUIRE(pf.is_finite == pr.is_finite);
-  CHECK(std::abs(pf.value - pr.value) <= 1e-9 * pr.value);
+  CHECK(std::abs(pf.value - pr.value) <= 1e-12 * MC::Max_flow_problem<double>(network).infinite_capacity());
 }
 
 TEST_CASE("pseudoflow: float and long double capacities", "[Min_cut][pseudoflow]")

@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include <cstdio>
 
 namespace CGAL {
 namespace Min_cut {
@@ -62,6 +63,8 @@ template <class Capacity>
 class Pseudoflow_solver
 {
 public:
+  mutable unsigned long long st_roots=0, st_relabel=0, st_visit=0, st_childscan=0, st_merge=0, st_push=0, st_kill=0, st_killnodes=0, st_arcscan=0, st_split=0;
+
   typedef std::uint32_t Index;
 
   explicit Pseudoflow_solver(const Max_flow_problem<Capacity>& problem) : problem_(problem) { build(); }
@@ -81,8 +84,9 @@ public:
       bucket_head_[highest_] = bucket_next_[r];
       if(bucket_head_[highest_] == none) bucket_tail_[highest_] = none;
       in_bucket_[r] = 0;
-      process_root(r);
+      process_root(r); ++st_roots;
     }
+    std::fprintf(stderr,"roots %llu relabel %llu visit %llu childscan %llu merge %llu push %llu split %llu kill %llu killnodes %llu arcscan %llu\n",st_roots,st_relabel,st_visit,st_childscan,st_merge,st_push,st_split,st_kill,st_killnodes,st_arcscan);
     minimal_source_side(on_source_side);
     return cut_capacity(on_source_side);
   }
@@ -202,7 +206,7 @@ private:
   {
     const Index end = first_[x + 1];
     const Index target = l - 1;
-    for(Index a = current_[x]; a < end; ++a)
+    for(Index a = current_[x]; a < end; ++a, ++st_arcscan)
       if(residual_[a] > 0 && label_[head_[a]] == target) {
         current_[x] = a;
         arc = a;
@@ -226,10 +230,10 @@ private:
     }
     for(;;) {
       Index c = scan_[x];
-      while(c != none && label_[c] != l) c = next_sibling_[c];
+      while(c != none && label_[c] != l) { c = next_sibling_[c]; ++st_childscan; }
       if(c != none) {
         scan_[x] = next_sibling_[c];
-        x = c;
+        x = c; ++st_visit;
         scan_[x] = first_child_[x];
         if(can_merge && find_merger(x, l, arc)) {
           merge_and_push(r, x, arc);
@@ -238,7 +242,7 @@ private:
         continue;
       }
       // Post-order: x's children of label l have been relabelled, so (L) holds after this.
-      --count_[l];
+      --count_[l]; ++st_relabel;
       label_[x] = l + 1;
       ++count_[l + 1];
       current_[x] = first_[x];
@@ -264,19 +268,19 @@ private:
       x = old_parent;
     }
 
-    Capacity delta = excess_[r];
+    ++st_merge; Capacity delta = excess_[r];
     excess_[r] = 0;
     x = r;
     while(parent_[x] != none) {
       const Index a = parent_arc_[x], p = parent_[x];
-      const Capacity available = residual_[a];
+      const Capacity available = residual_[a]; ++st_push;
       if(delta >= available) {
         // Saturate and split: x keeps what the arc cannot take (exactly 0 when delta == available;
         // it is still made a strong root, so that weak roots keep label 1).
         residual_[a] = 0;
         residual_[reverse_[a]] += available;
         excess_[x] = delta - available;
-        remove_from_parent(x);
+        remove_from_parent(x); ++st_split;
         add_to_bucket(x);
         delta = available;
       } else {
@@ -292,9 +296,10 @@ private:
 
   void kill_tree(Index r)
   {
+    ++st_kill;
     Index x = r;
     for(;;) {
-      --count_[label_[x]];
+      --count_[label_[x]]; ++st_killnodes;
       label_[x] = dead_;
       if(first_child_[x] != none) {
         x = first_child_[x];
