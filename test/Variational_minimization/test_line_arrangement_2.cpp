@@ -421,6 +421,28 @@ TEST_CASE("Line_arrangement_2: pencils through boundary points", "[Variational_m
   check_all(unit, VM::random_lines_2(unit, 60, 5, options), { 0.0, 1.0 }, { 1.0 });
 }
 
+TEST_CASE("Line_arrangement_2: a pencil through an interior point", "[Variational_minimization][arrangement]")
+{
+  // Pencil lines have the point as a defining point; four more lines pass through it exactly without it.
+  const CGAL::Bbox_2 box(0, 0, 1, 1);
+  VM::Random_lines_options options;
+  options.pencil_points = { P(0.375, 0.625) };
+  options.pencil_fraction = 0.5;
+  std::vector<Line> lines = VM::random_lines_2(box, 80, 17, options);
+  lines.push_back(line(0.125, 0.375, 0.625, 0.875));
+  lines.push_back(line(0.125, 0.875, 0.625, 0.375));
+  lines.push_back(line(0.375, 0, 0.375, 1));
+  lines.push_back(line(0, 0.625, 1, 0.625));
+  check_all(box, lines);
+  const Arr a(box, lines);
+  std::size_t degree = 0;
+  for(std::size_t i = 0; i < a.number_of_edges(); ++i) {
+    const Arr::Edge& ed = a.edge(Arr::Edge_index(i));
+    degree += (a.point(ed.source) == P(0.375, 0.625)) + (a.point(ed.target) == P(0.375, 0.625));
+  }
+  CHECK(degree == 2 * (40 + 4));
+}
+
 TEST_CASE("Line_arrangement_2: the planar regular grid C_n^pl", "[Variational_minimization][arrangement]")
 {
   // Exact grids: every grid point is one vertex where many lines meet.

@@ -12,6 +12,7 @@
 
 #include <CGAL/Min_cut/Flow_network.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -84,7 +85,8 @@ public:
       bucket_head_[highest_] = bucket_next_[r];
       if(bucket_head_[highest_] == none) bucket_tail_[highest_] = none;
       in_bucket_[r] = 0;
-      process_root(r); ++st_roots;
+      process_root(r);
+      if(work_ > relabel_period_) global_relabel(); ++st_roots;
     }
     std::fprintf(stderr,"roots %llu relabel %llu visit %llu childscan %llu merge %llu push %llu split %llu kill %llu killnodes %llu arcscan %llu\n",st_roots,st_relabel,st_visit,st_childscan,st_merge,st_push,st_split,st_kill,st_killnodes,st_arcscan);
     minimal_source_side(on_source_side);
@@ -148,7 +150,6 @@ private:
     const std::size_t n = n_;
     dead_ = Index(n + 1);
     excess_.resize(n);
-    label_.assign(n, 1);
     parent_.assign(n, none);
     parent_arc_.assign(n, none);
     first_child_.assign(n, none);
@@ -161,12 +162,65 @@ private:
     bucket_head_.assign(n + 2, none);
     bucket_tail_.assign(n + 2, none);
     count_.assign(n + 2, 0);
-    count_[1] = n_;
     highest_ = 0;
+    relabel_period_ = std::size_t(PF_FACTOR * double(n + head_.size()));
+    for(Index x = 0; x < n_; ++x) excess_[x] = problem_.source_capacity(x) - problem_.sink_capacity(x);
+
+    // Every node starts as a root: the deficit nodes weak, all others strong (with positive or
+    // zero excess: a zero-excess root merges like any other, pushing nothing, which hangs it on a
+    // shortest residual path towards a deficit before any excess arrives). The global relabelling
+    // then gives exact labels and the buckets.
+    label_.assign(n, 1);
     for(Index x = 0; x < n_; ++x) {
       excess_[x] = problem_.source_capacity(x) - problem_.sink_capacity(x);
-      if(excess_[x] > 0) add_to_bucket(x);
+      in_bucket_[x] = excess_[x] >= 0;
     }
+    global_relabel();
+  }
+
+  // Sets every label to 1 + the residual distance to the nearest weak root (all of them have
+  // label 1), found by a breadth-first search backwards over residual arcs with `scan_` as the
+  // queue. Labels stay valid and only grow (valid labels are lower bounds of these). Nodes that
+  // reach no weak root are dead. A tree arc whose child now has a smaller label than its parent
+  // would break (L): it is cut, and the child becomes a strong root with zero excess (which also
+  // keeps every weak root at label 1). The buckets are rebuilt.
+  void global_relabel()
+  {
+    std::size_t head = 0, tail = 0;
+    for(Index x = 0; x < n_; ++x)
+      if(parent_[x] == none && !in_bucket_[x] && label_[x] != dead_) scan_[tail++] = x;
+    std::fill(label_.begin(), label_.end(), dead_);
+    for(std::size_t k = 0; k < tail; ++k) label_[scan_[k]] = 1;
+    while(head < tail) {
+      const Index x = scan_[head++];
+      const Index next_label = label_[x] + 1;
+      for(Index a = first_[x]; a < first_[x + 1]; ++a) {
+        const Index y = head_[a];
+        if(label_[y] == dead_ && residual_[reverse_[a]] > 0) {
+          label_[y] = next_label;
+          scan_[tail++] = y;
+        }
+      }
+    }
+    std::fill(count_.begin(), count_.end(), Index(0));
+    std::fill(bucket_head_.begin(), bucket_head_.end(), none);
+    std::fill(bucket_tail_.begin(), bucket_tail_.end(), none);
+    highest_ = 0;
+    for(Index x = 0; x < n_; ++x) {
+      current_[x] = first_[x];
+      if(label_[x] == dead_) continue;
+      ++count_[label_[x]];
+      if(parent_[x] != none && label_[x] < label_[parent_[x]]) {
+        remove_from_parent(x);
+        in_bucket_[x] = 1;
+      }
+    }
+    for(Index x = 0; x < n_; ++x)
+      if(in_bucket_[x]) {
+        if(label_[x] != dead_) add_to_bucket(x);
+        else in_bucket_[x] = 0;
+      }
+    work_ = 0;
   }
 
   void add_to_bucket(Index x)
@@ -206,6 +260,7 @@ private:
   {
     const Index end = first_[x + 1];
     const Index target = l - 1;
+    work_ += end - current_[x];
     for(Index a = current_[x]; a < end; ++a, ++st_arcscan)
       if(residual_[a] > 0 && label_[head_[a]] == target) {
         current_[x] = a;
@@ -245,6 +300,7 @@ private:
       --count_[l]; ++st_relabel;
       label_[x] = l + 1;
       ++count_[l + 1];
+      work_ += 12;
       current_[x] = first_[x];
       if(x == r) break;
       x = parent_[x];
@@ -358,6 +414,9 @@ private:
 
   const Max_flow_problem<Capacity>& problem_;
   Index n_ = 0, dead_ = 1, highest_ = 0;
+  // Arcs scanned and nodes relabelled since the last global relabelling, and the amount of such
+  // work after which the next one pays off.
+  std::size_t work_ = 0, relabel_period_ = 0;
   // Arcs in CSR order: 16 bytes per arc with double capacities.
   std::vector<Index> first_, head_, reverse_;
   std::vector<Capacity> residual_;

@@ -94,12 +94,12 @@ class Line_arrangement_builder
     Index aux;
   };
 
-  // A vertex found on line `other`, posted to a line of larger index that passes through it.
+  // A vertex found on line `other`, posted to a line of larger index that passes through it. The vertex
+  // itself is the `source` of that slot, read when the slot is linked anyway.
   struct Forward
   {
     Index other;    // the line of smaller index
-    Index vertex;   // the vertex
-    Index slot;     // the slot of that vertex on line `other`
+    Index slot;     // the slot of the vertex on line `other`
   };
 
   // A slot at a vertex, with the slope rank of its line.
@@ -287,20 +287,65 @@ private:
         reach = (std::max)(reach, items[end].hi);
         ++end;
       }
-      if(end == k + 1) {
+      if(end == k + 1)
         group(k, end);
-      } else {
-        std::sort(items.begin() + k, items.begin() + end, [&](const Keyed& a, const Keyed& b) {
-          return compare_params_exact(base, lines_[a.other], lines_[b.other]) == CGAL::SMALLER;
-        });
-        std::size_t g = k;
-        for(std::size_t j = k + 1; j <= end; ++j)
-          if(j == end || compare_params_exact(base, lines_[items[g].other], lines_[items[j].other]) != CGAL::EQUAL) {
-            group(g, j);
-            g = j;
-          }
-      }
+      else
+        resolve_cluster(base, items, k, end, group);
       k = end;
+    }
+  }
+
+  // A run of items whose parameter intervals overlap: exact parameters, computed once per item, then
+  // sorted and grouped. The common cluster is a point where several lines meet, all equal: one pass.
+  template <class Group>
+  void resolve_cluster(const Arr_line& base, std::vector<Keyed>& items, std::size_t first, std::size_t last,
+                       Group& group)
+  {
+    const std::size_t count = last - first;
+    exact_keys_.resize(count);
+    for(std::size_t i = 0; i < count; ++i)
+      exact_key(base, lines_[items[first + i].other], exact_keys_[i]);
+    auto compare = [&](std::size_t a, std::size_t b) {
+      return CGAL::sign(exact_keys_[a].first * exact_keys_[b].second - exact_keys_[b].first * exact_keys_[a].second);
+    };
+    std::size_t i = 1;
+    while(i < count && compare(0, i) == CGAL::ZERO) ++i;
+    if(i == count) {
+      group(first, last);
+      return;
+    }
+    permutation_.resize(count);
+    for(std::size_t j = 0; j < count; ++j) permutation_[j] = j;
+    std::sort(permutation_.begin(), permutation_.end(),
+              [&](std::size_t a, std::size_t b) { return compare(a, b) == CGAL::NEGATIVE; });
+    cluster_buffer_.assign(items.begin() + first, items.begin() + last);
+    for(std::size_t j = 0; j < count; ++j) items[first + j] = cluster_buffer_[permutation_[j]];
+    std::size_t g = 0;
+    for(std::size_t j = 1; j <= count; ++j)
+      if(j == count || compare(permutation_[g], permutation_[j]) != CGAL::ZERO) {
+        group(first + g, first + j);
+        g = j;
+      }
+  }
+
+  // The exact parameter along base of its intersection with o, as n / d with d > 0. When o shares a
+  // defining point with base (pencils are built that way), the parameter is 0 or 1 without arithmetic.
+  static void exact_key(const Arr_line& base, const Arr_line& o, std::pair<Arr_exact_nt, Arr_exact_nt>& key)
+  {
+    auto is = [](double x, double y, double u, double v) { return x == u && y == v; };
+    if(is(o.px, o.py, base.px, base.py) || is(o.qx, o.qy, base.px, base.py)) {
+      key.first = Arr_exact_nt(0);
+      key.second = Arr_exact_nt(1);
+    } else if(is(o.px, o.py, base.qx, base.qy) || is(o.qx, o.qy, base.qx, base.qy)) {
+      key.first = Arr_exact_nt(1);
+      key.second = Arr_exact_nt(1);
+    } else {
+      exact_param(base, o, key.first, key.second);
+      CGAL_assertion(CGAL::sign(key.second) != CGAL::ZERO);
+      if(CGAL::sign(key.second) == CGAL::NEGATIVE) {
+        key.first = -key.first;
+        key.second = -key.second;
+      }
     }
   }
 
@@ -567,7 +612,7 @@ private:
     // those lines; line j reads them all, then frees them.
     std::vector<std::vector<Forward>> inbox(m_);
     std::vector<Keyed> items;
-    std::vector<std::pair<Index, Index>> known;   // for lines of smaller index: (vertex, slot)
+    std::vector<Index> known;   // for lines of smaller index: the slot of the vertex on that line
     std::vector<Incidence> inc;
     slot_offset_.assign(std::size_t(m_) + 5, 0);
 
@@ -581,8 +626,8 @@ private:
         double lo, hi;
         param_interval(l, lines_[f.other], lo, hi);
         items.push_back(Keyed{ lo, hi, f.other, Index(known.size()) });
-        known.emplace_back(f.vertex, f.slot);
-        prefetch(ws.data() + f.slot);   // its link word is written when the vertex is closed
+        known.push_back(f.slot);
+        prefetch(ws.data() + f.slot);   // read for the vertex, written for the link
       }
       std::vector<Forward>().swap(inbox[s]);
       // Lines of larger index: test exactly whether they cross s strictly inside the box.
@@ -606,8 +651,8 @@ private:
         bool last_line = true;   // s is the line of largest index through the vertex
         for(std::size_t k = first; k < last; ++k) {
           if(items[k].other < s) {
-            CGAL_assertion(v == none || v == known[items[k].aux].first);
-            v = known[items[k].aux].first;
+            CGAL_assertion(v == none || v == ws[known[items[k].aux]].source);
+            v = ws[known[items[k].aux]].source;
           } else {
             last_line = false;
           }
@@ -628,10 +673,10 @@ private:
         push_slot(v, line, Arrangement::LINE_EDGE);
         for(std::size_t k = first; k < last; ++k)
           if(items[k].other > s)
-            inbox[items[k].other].push_back(Forward{ s, v, slot });
+            inbox[items[k].other].push_back(Forward{ s, slot });
         if(last_line && last - first == 1) {
           // The common case: a vertex of exactly two lines.
-          const Index other_slot = known[items[first].aux].second;
+          const Index other_slot = known[items[first].aux];
           const bool s_steeper = rank_[s] > rank_[items[first].other];
           CGAL_assertion(rank_[s] != rank_[items[first].other]);
           const Index both = next_in_bit | next_out_bit | pair_bit;
@@ -641,7 +686,7 @@ private:
           inc.clear();
           inc.push_back(Incidence{ rank_[s], slot, true, true });
           for(std::size_t k = first; k < last; ++k)
-            inc.push_back(Incidence{ rank_[items[k].other], known[items[k].aux].second, true, true });
+            inc.push_back(Incidence{ rank_[items[k].other], known[items[k].aux], true, true });
           link_cycle(inc);
         }
       });
@@ -887,7 +932,9 @@ private:
   std::vector<double> in_lo_, in_hi_, out_lo_, out_hi_;
   std::array<std::vector<Index>, 4> wall_seq_;
   std::vector<Index> slot_offset_;     // slots of line s (then of the walls): [offset[s], offset[s + 1])
-  std::vector<Keyed> sort_buffer_;
+  std::vector<Keyed> sort_buffer_, cluster_buffer_;
+  std::vector<std::pair<Arr_exact_nt, Arr_exact_nt>> exact_keys_;
+  std::vector<std::size_t> permutation_;
   std::vector<std::size_t> bucket_start_;
 };
 
