@@ -2,7 +2,7 @@
 // weights, min-cut (both Boost engines) and the shortest-path oracle; and the catenoid energy error vs the
 // grid size for random line arrangements and the regular grids C_n / C_n^pl.
 //
-//   bench_curve_2 [--max-lines N] [--runs K] [--csv PREFIX]
+//   bench_curve_2 [--max-lines N] [--runs K] [--boost-engines-up-to N (default 1000)] [--csv PREFIX]
 // writes PREFIX_time.csv and PREFIX_error.csv (default PREFIX: curve_benchmark).
 #include <mdcs_bench.h>
 
@@ -34,8 +34,8 @@ std::vector<VM::Arrangement_line_2> catenoid_lines(const VM::Curve_problem_2& p,
 
 struct Phase_times
 {
-  std::vector<double> build, weights, cut_pr, cut_bk, path, total_pr;
-  double peak_build = 0, peak_cut_pr = 0, peak_cut_bk = 0, peak_path = 0;
+  std::vector<double> build, weights, cut_pf, cut_pr, cut_bk, path, total_pf;
+  double peak_build = 0, peak_cut_pf = 0, peak_cut_pr = 0, peak_cut_bk = 0, peak_path = 0;
   std::size_t V = 0, E = 0, F = 0;
   double energy = 0, max_duality_gap = 0;
 };
@@ -45,14 +45,21 @@ struct Phase_times
 int main(int argc, char** argv)
 {
   std::size_t max_lines = 10000;
+  std::size_t slow_engine_limit = 1000;
+  std::size_t cut_limit = 1000000;
+  std::size_t only = 0; // run only this number of lines in part 1, and skip part 2
   int runs = 3;
   std::string prefix = "curve_benchmark";
   for(int i = 1; i < argc; ++i) {
     if(!std::strcmp(argv[i], "--max-lines") && i + 1 < argc) max_lines = std::strtoul(argv[++i], nullptr, 10);
     else if(!std::strcmp(argv[i], "--runs") && i + 1 < argc) runs = std::atoi(argv[++i]);
+    else if(!std::strcmp(argv[i], "--boost-engines-up-to") && i + 1 < argc) slow_engine_limit = std::strtoul(argv[++i], nullptr, 10);
+    else if(!std::strcmp(argv[i], "--cut-up-to") && i + 1 < argc) cut_limit = std::strtoul(argv[++i], nullptr, 10);
+    else if(!std::strcmp(argv[i], "--only") && i + 1 < argc) only = std::strtoul(argv[++i], nullptr, 10);
     else if(!std::strcmp(argv[i], "--csv") && i + 1 < argc) prefix = argv[++i];
     else {
-      std::cerr << "usage: bench_curve_2 [--max-lines N] [--runs K] [--csv PREFIX]\n";
+      std::cerr << "usage: bench_curve_2 [--max-lines N] [--runs K] [--boost-engines-up-to N] [--cut-up-to N] [--only N]"
+                   " [--csv PREFIX]\n";
       return 2;
     }
   }
@@ -65,11 +72,12 @@ int main(int argc, char** argv)
   // ---- 1. time and memory vs number of lines ------------------------------------------------------------
   std::cout << "Catenoid R = 2 on random lines (10% in pencils through the end points), one core.\n"
             << "Times are medians of " << runs << " runs (1 run above 3000 lines); peak = peak RSS of the phase.\n\n";
-  mdcs_bench::Table time_table({"lines", "V", "E", "F", "build_s", "weights_s", "cut_pr_s", "cut_bk_s", "path_s",
-                                "total_pr_s", "peak_build_MiB", "peak_cut_pr_MiB", "peak_cut_bk_MiB",
-                                "peak_path_MiB", "rel_error", "cut_vs_path"});
+  mdcs_bench::Table time_table({"lines", "V", "E", "F", "build_s", "weights_s", "cut_pf_s", "cut_pr_s", "cut_bk_s",
+                                "path_s", "solve_pf_s", "peak_build_MiB", "peak_cut_pf_MiB", "peak_cut_pr_MiB",
+                                "peak_cut_bk_MiB", "peak_path_MiB", "rel_error", "cut_vs_path"});
   for(std::size_t n : {100, 300, 1000, 3000, 10000}) {
     if(n > max_lines) break;
+    if(only != 0 && n != only) continue;
     Phase_times t;
     const int k = n > 3000 ? 1 : runs;
     for(int r = 0; r < k; ++r) {
@@ -82,42 +90,56 @@ int main(int argc, char** argv)
       const std::vector<double> weights = VM::curve_edge_weights_2(arrangement, G);
       double t2 = mdcs_bench::now_seconds();
       mdcs_bench::reset_peak_rss();
-      const auto pr = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Push_relabel_max_flow());
-      double t3 = mdcs_bench::now_seconds();
-      t.peak_cut_pr = mdcs_bench::peak_rss_mib();
-      mdcs_bench::reset_peak_rss();
-      const auto bk = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Boykov_kolmogorov_max_flow());
-      double t4 = mdcs_bench::now_seconds();
-      t.peak_cut_bk = mdcs_bench::peak_rss_mib();
+      const auto pf = n <= cut_limit ? VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Pseudoflow_max_flow())
+                                     : VM::directed_shortest_path_2(arrangement, weights, problem);
+      double t3a = mdcs_bench::now_seconds();
+      t.peak_cut_pf = mdcs_bench::peak_rss_mib();
+      // Boost's engines are too slow to run above slow_engine_limit lines (minutes to hours).
+      VM::Minimal_curve_2 pr = pf, bk = pf;
+      double t3 = t3a, t4 = t3a;
+      if(n <= slow_engine_limit && n <= cut_limit) {
+        mdcs_bench::reset_peak_rss();
+        pr = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Push_relabel_max_flow());
+        t3 = mdcs_bench::now_seconds();
+        t.peak_cut_pr = mdcs_bench::peak_rss_mib();
+        mdcs_bench::reset_peak_rss();
+        bk = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Boykov_kolmogorov_max_flow());
+        t4 = mdcs_bench::now_seconds();
+        t.peak_cut_bk = mdcs_bench::peak_rss_mib();
+      }
       mdcs_bench::reset_peak_rss();
       const auto path = VM::directed_shortest_path_2(arrangement, weights, problem);
       double t5 = mdcs_bench::now_seconds();
       t.peak_path = mdcs_bench::peak_rss_mib();
       t.build.push_back(t1 - t0);
       t.weights.push_back(t2 - t1);
-      t.cut_pr.push_back(t3 - t2);
+      t.cut_pf.push_back(t3a - t2);
+      t.cut_pr.push_back(t3 - t3a);
       t.cut_bk.push_back(t4 - t3);
       t.path.push_back(t5 - t4);
-      t.total_pr.push_back((t1 - t0) + (t2 - t1) + (t3 - t2));
+      t.total_pf.push_back((t1 - t0) + (t2 - t1) + (t3a - t2));
       t.V = arrangement.number_of_vertices();
       t.E = arrangement.number_of_edges();
       t.F = arrangement.number_of_faces();
-      t.energy = pr.energy;
-      const double gap = std::max(std::abs(pr.solver_value - path.solver_value), std::abs(bk.solver_value - path.solver_value)) /
-                         path.solver_value;
+      t.energy = pf.energy;
+      const double gap = std::max({std::abs(pf.solver_value - path.solver_value), std::abs(pr.solver_value - path.solver_value),
+                                   std::abs(bk.solver_value - path.solver_value)}) / path.solver_value;
       t.max_duality_gap = std::max(t.max_duality_gap, gap);
     }
     time_table.add_row({std::to_string(n), std::to_string(t.V), std::to_string(t.E), std::to_string(t.F),
                         fmt(mdcs_bench::median(t.build)), fmt(mdcs_bench::median(t.weights)),
-                        fmt(mdcs_bench::median(t.cut_pr)), fmt(mdcs_bench::median(t.cut_bk)),
-                        fmt(mdcs_bench::median(t.path)), fmt(mdcs_bench::median(t.total_pr)), fmt(t.peak_build, "%.0f"),
-                        fmt(t.peak_cut_pr, "%.0f"), fmt(t.peak_cut_bk, "%.0f"), fmt(t.peak_path, "%.0f"),
+                        n <= cut_limit ? fmt(mdcs_bench::median(t.cut_pf)) : "-", n <= slow_engine_limit ? fmt(mdcs_bench::median(t.cut_pr)) : "-",
+                        n <= slow_engine_limit ? fmt(mdcs_bench::median(t.cut_bk)) : "-",
+                        fmt(mdcs_bench::median(t.path)), n <= cut_limit ? fmt(mdcs_bench::median(t.total_pf)) : "-",
+                        fmt(t.peak_build, "%.0f"), n <= cut_limit ? fmt(t.peak_cut_pf, "%.0f") : "-", n <= slow_engine_limit ? fmt(t.peak_cut_pr, "%.0f") : "-",
+                        n <= slow_engine_limit ? fmt(t.peak_cut_bk, "%.0f") : "-", fmt(t.peak_path, "%.0f"),
                         fmt((t.energy - exact) / exact, "%.3e"), fmt(t.max_duality_gap, "%.1e")});
     std::cout << "  done: " << n << " lines\n" << std::flush;
   }
   std::cout << "\n";
   time_table.print();
   time_table.write_csv(prefix + "_time.csv");
+  if(only != 0) return 0;
 
   // ---- 2. energy error vs grid size: random arrangements vs the regular grids -----------------------------
   std::cout << "\nCatenoid R = 2: relative energy error of the discrete optimum (exact F = " << fmt(exact, "%.6f")

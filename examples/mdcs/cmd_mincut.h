@@ -17,10 +17,10 @@ namespace mdcs_cli {
 inline const char* mincut_usage()
 {
   return
-    "usage: mdcs mincut FILE [--engine pr|bk] [--sides OUT]\n"
+    "usage: mdcs mincut FILE [--engine pf|pr|bk] [--sides OUT]\n"
     "Reads a max-flow problem in DIMACS format ('p max N M', 'n ID s', 'n ID t', 'a U V CAP'), computes the\n"
     "maximum flow / minimum cut with the Min_cut component and prints the value and the size of the source side.\n"
-    "  --engine pr|bk   push-relabel (default) or Boykov-Kolmogorov (Boost.Graph, 32-bit CSR graph)\n"
+    "  --engine pf|pr|bk  pseudoflow (default), push-relabel or Boykov-Kolmogorov (Boost.Graph, 32-bit CSR)\n"
     "  --sides OUT      write one line per node: 'ID S' (source side) or 'ID T'\n";
 }
 
@@ -93,8 +93,9 @@ inline Mincut_report solve_dimacs_file(const std::string& path, const std::strin
   report.nodes = std::size_t(n);
   report.arcs = std::size_t(arcs);
   const auto t0 = std::chrono::steady_clock::now();
-  const auto cut = engine == "bk" ? CGAL::Min_cut::solve_min_cut(network, CGAL::Min_cut::Boykov_kolmogorov_max_flow())
-                                  : CGAL::Min_cut::solve_min_cut(network, CGAL::Min_cut::Push_relabel_max_flow());
+  const auto cut = engine == "bk"   ? CGAL::Min_cut::solve_min_cut(network, CGAL::Min_cut::Boykov_kolmogorov_max_flow())
+                   : engine == "pr" ? CGAL::Min_cut::solve_min_cut(network, CGAL::Min_cut::Push_relabel_max_flow())
+                                    : CGAL::Min_cut::solve_min_cut(network, CGAL::Min_cut::Pseudoflow_max_flow());
   report.seconds = seconds_since(t0);
   report.value = cut.value + direct;
   report.on_source_side = cut.on_source_side;
@@ -148,8 +149,8 @@ inline int command_mincut(const Options& o)
     std::cout << mincut_usage();
     return EXIT_OK;
   }
-  const std::string engine = o.text("engine", "pr");
-  if(engine != "pr" && engine != "bk") throw Usage_error("--engine must be pr or bk (got '" + engine + "')");
+  const std::string engine = o.text("engine", "pf");
+  if(engine != "pf" && engine != "pr" && engine != "bk") throw Usage_error("--engine must be pf, pr or bk (got '" + engine + "')");
   const std::string sides = o.text("sides", "");
   o.reject_unknown();
   if(o.positional().size() != 1) throw Usage_error("mdcs mincut needs exactly one DIMACS file");
@@ -157,7 +158,8 @@ inline int command_mincut(const Options& o)
   std::cout.precision(12);
   std::cout << "max flow = min cut = " << r.value << "\n"
             << "nodes " << r.nodes << ", arcs " << r.arcs << ", source side " << r.source_side << " nodes\n"
-            << "engine " << (engine == "bk" ? "Boykov-Kolmogorov" : "push-relabel") << ", " << r.seconds << " s\n";
+            << "engine " << (engine == "bk" ? "Boykov-Kolmogorov" : engine == "pr" ? "push-relabel" : "pseudoflow") << ", "
+            << r.seconds << " s\n";
   if(!sides.empty()) {
     std::ofstream out(sides);
     if(!out) throw std::runtime_error("cannot write '" + sides + "'");

@@ -17,6 +17,7 @@
 
 #include <CGAL/Min_cut/Flow_network.h>
 #include <CGAL/Min_cut/Boykov_kolmogorov_max_flow.h>
+#include <CGAL/Min_cut/Pseudoflow_max_flow.h>
 #include <CGAL/Min_cut/Push_relabel_max_flow.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
 

@@ -541,6 +541,31 @@ TEST_CASE("Line_arrangement_2: lines meeting exactly on a wall and marks on hits
   check_all(box, lines, { 1, 1, 0.5, 2 }, { 0.5, 0, 2, 1.25 });
 }
 
+TEST_CASE("Line_arrangement_2: lines through lattice points", "[Variational_minimization][arrangement]")
+{
+  // Lines through two random points of a small integer lattice around the box: many lines through each
+  // lattice point, through corners, along walls, parallel and duplicate lines, marks on line hits. With
+  // the scale 0.1 the lattice is not exact in doubles (near-degenerate instead of degenerate).
+  std::mt19937_64 rng(77);
+  for(int instance = 0; instance < 150; ++instance) {
+    const long r = 2 + long(rng() % 7);
+    const double sx = instance % 2 ? 1.0 : 0.1, sy = sx * double(1 + rng() % 2);
+    const CGAL::Bbox_2 box(0, 0, double(r) * sx, double(r) * sy);
+    std::vector<Line> lines;
+    const int n = 1 + int(rng() % 30);
+    for(int i = 0; i < n; ++i) {
+      const long a = long(rng() % (3 * r + 1)) - r, b = long(rng() % (3 * r + 1)) - r;
+      const long c = long(rng() % (3 * r + 1)) - r, d = long(rng() % (3 * r + 1)) - r;
+      if(a != c || b != d) lines.push_back(line(double(a) * sx, double(b) * sy, double(c) * sx, double(d) * sy));
+    }
+    std::vector<double> left, right;
+    for(int k = int(rng() % 4); k > 0; --k) left.push_back(double(rng() % (2 * r + 1)) / 2 * sy);
+    for(int k = int(rng() % 4); k > 0; --k) right.push_back(double(rng() % (2 * r + 1)) / 2 * sy);
+    INFO("instance " << instance);
+    check_all(box, lines, left, right);
+  }
+}
+
 TEST_CASE("Line_arrangement_2: other boxes and scales", "[Variational_minimization][arrangement]")
 {
   const CGAL::Bbox_2 far(1e6, -3e5, 1e6 + 1, -3e5 + 2);

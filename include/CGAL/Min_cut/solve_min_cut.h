@@ -9,6 +9,7 @@
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Min_cut/Boykov_kolmogorov_max_flow.h>
 #include <CGAL/Min_cut/Flow_network.h>
+#include <CGAL/Min_cut/Pseudoflow_max_flow.h>
 #include <CGAL/Min_cut/Push_relabel_max_flow.h>
 
 #include <cstddef>
@@ -81,12 +82,14 @@ struct Min_cut_result
   std::vector<Cut_facet> chain;
 };
 
-/// The engine `solve_min_cut()` uses when none is given: push-relabel. On the grid-shaped networks
-/// of the variational problems (terminal arcs only on the boundary rows, hence long augmenting
-/// paths) it measured as fast as Boykov-Kolmogorov at 10^4 nodes, 2-2.4 times faster at 10^5 and
-/// 4-7 times faster at 10^6, for 60 instead of 36 bytes per arc (benchmark/Min_cut/bench_min_cut.cpp,
-/// table in doc/Min_cut/Min_cut.md).
-typedef Push_relabel_max_flow Default_max_flow_engine;
+/// The engine `solve_min_cut()` uses when none is given: pseudoflow. On the duals of line
+/// arrangements (terminal arcs only on the boundary, infinite "stay a function" arcs: a maximum
+/// closure problem) it measured 6-7 times faster than Boost's push-relabel from 3*10^4 to 2.6*10^6
+/// nodes, with 35 instead of 60 bytes per arc, and identical values and sides
+/// (benchmark/Min_cut/bench_engines_1d.cpp). Push-relabel was in turn 2-7 times faster than
+/// Boykov-Kolmogorov on such networks above 10^5 nodes (benchmark/Min_cut/bench_min_cut.cpp).
+/// Tables in doc/Min_cut/Min_cut.md.
+typedef Pseudoflow_max_flow Default_max_flow_engine;
 
 /*!
   \ingroup PkgMinCutRef

@@ -58,7 +58,8 @@ inline void check_generator_box(const CGAL::Bbox_2& box, const char* who)
   if(!(std::isfinite(box.xmin()) && std::isfinite(box.xmax()) && std::isfinite(box.ymin()) &&
        std::isfinite(box.ymax())) ||
      !(box.xmin() < box.xmax()) || !(box.ymin() < box.ymax()))
-    throw std::invalid_argument(std::string("MDCS: ") + who + ": the box must be finite with xmin < xmax and ymin < ymax");
+    throw std::invalid_argument(std::string("MDCS: ") + who +
+                                ": the box must be finite with xmin < xmax and ymin < ymax");
 }
 
 // A direction (a, b) with a >= 0, uniform in angle within |b| <= max_abs_slope * a (all directions if 0):

@@ -35,8 +35,9 @@ inline std::vector<VM::Arrangement_line_2> lines_for(const VM::Curve_problem_2& 
 
 struct Checked_solve
 {
-  VM::Minimal_curve_2 cut;          // default engine
-  VM::Minimal_curve_2 cut_other;    // the other Boost engine
+  VM::Minimal_curve_2 cut;          // default engine (pseudoflow)
+  VM::Minimal_curve_2 cut_pr;       // Boost push-relabel
+  VM::Minimal_curve_2 cut_bk;       // Boost Boykov-Kolmogorov
   VM::Minimal_curve_2 path;         // directed shortest path (oracle)
 };
 
@@ -44,8 +45,9 @@ inline Checked_solve solve_both_ways(const VM::Curve_problem_2& problem, const V
                                      const std::vector<double>& weights)
 {
   Checked_solve s;
-  s.cut = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Push_relabel_max_flow());
-  s.cut_other = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Boykov_kolmogorov_max_flow());
+  s.cut = VM::minimize_curve_functional_2(arrangement, weights, problem);
+  s.cut_pr = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Push_relabel_max_flow());
+  s.cut_bk = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Boykov_kolmogorov_max_flow());
   s.path = VM::directed_shortest_path_2(arrangement, weights, problem);
   return s;
 }

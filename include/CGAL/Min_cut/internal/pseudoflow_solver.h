@@ -19,7 +19,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-#include <cstdio>
 
 namespace CGAL {
 namespace Min_cut {
@@ -32,21 +31,23 @@ namespace internal {
 //   appear again: a saturated source arc has no residual capacity out of the source, a saturated
 //   sink arc none into the sink.
 // - A forest over the nodes (parent, parent arc, doubly linked child lists). Only roots carry
-//   excess. A root is *strong* when it sits in a bucket (excess > 0, or exactly 0 right after a
-//   split), *weak* otherwise (excess <= 0); a node is strong or weak with its root. Roots that a
-//   gap or the label bound proves unable to reach any weak node are *dead*: their whole tree has
-//   label `dead_` and is never touched again.
+//   excess. A root is *strong* when it sits in a bucket (excess > 0, or excess 0 for the nodes
+//   that start without deficit and for the tails of split arcs), *weak* otherwise (a node that
+//   started with a deficit and still has excess <= 0); a node is strong or weak with its root.
+//   Trees that a gap proves unable to reach any weak node are *dead*: their nodes get label
+//   `dead_` and are never touched again.
 // - (T) every tree arc x -> parent(x) has residual capacity > 0, so every node reaches its root.
 // - (V) labels are valid: residual arc u -> v implies l(u) <= l(v) + 1.
 // - (L) l(child) >= l(parent); a tree's root has its smallest label.
 // - Weak roots are never relabelled and keep label 1 (a root leaves the buckets only to be
 //   processed; a processed root either hangs itself under another tree or is relabelled).
-//   By (T) and (V) a weak node has label <= its depth + 1, so a strong node with label > n
-//   reaches no weak node.
+// - The labels in use are contiguous from 1: they start so, only a relabel can empty a label,
+//   and then the gap rule kills everything above it. Hence no label exceeds n while alive.
 //
 // Main loop: take a strong root r of highest label l (FIFO within a label). Search r's tree, depth
 // first and only through nodes of label l, for a *merger arc*: a residual arc (v, w) with
-// l(w) = l - 1 (w lies in another tree by (L)). If one exists, re-root r's tree at v, hang it under
+// l(w) = l - 1 (w lies in another tree by (L); usually a weak one, but a strong tree of lower
+// root label is as good: its root just gains excess). If one exists, re-root r's tree at v, hang it under
 // w and push r's excess along the tree path r -> ... -> v -> w -> ... -> root; an arc that cannot
 // take all of it is saturated and split off, its tail becoming a strong root that keeps the rest.
 // Otherwise every searched node is relabelled to l + 1, in post-order so that (L) always holds.
@@ -64,8 +65,6 @@ template <class Capacity>
 class Pseudoflow_solver
 {
 public:
-  mutable unsigned long long st_roots=0, st_relabel=0, st_visit=0, st_childscan=0, st_merge=0, st_push=0, st_kill=0, st_killnodes=0, st_arcscan=0, st_split=0;
-
   typedef std::uint32_t Index;
 
   explicit Pseudoflow_solver(const Max_flow_problem<Capacity>& problem) : problem_(problem) { build(); }
@@ -86,9 +85,7 @@ public:
       if(bucket_head_[highest_] == none) bucket_tail_[highest_] = none;
       in_bucket_[r] = 0;
       process_root(r);
-      if(work_ > relabel_period_) global_relabel(); ++st_roots;
     }
-    std::fprintf(stderr,"roots %llu relabel %llu visit %llu childscan %llu merge %llu push %llu split %llu kill %llu killnodes %llu arcscan %llu\n",st_roots,st_relabel,st_visit,st_childscan,st_merge,st_push,st_split,st_kill,st_killnodes,st_arcscan);
     minimal_source_side(on_source_side);
     return cut_capacity(on_source_side);
   }
@@ -163,34 +160,25 @@ private:
     bucket_tail_.assign(n + 2, none);
     count_.assign(n + 2, 0);
     highest_ = 0;
-    relabel_period_ = std::size_t(PF_FACTOR * double(n + head_.size()));
-    for(Index x = 0; x < n_; ++x) excess_[x] = problem_.source_capacity(x) - problem_.sink_capacity(x);
 
-    // Every node starts as a root: the deficit nodes weak, all others strong (with positive or
-    // zero excess: a zero-excess root merges like any other, pushing nothing, which hangs it on a
-    // shortest residual path towards a deficit before any excess arrives). The global relabelling
-    // then gives exact labels and the buckets.
-    label_.assign(n, 1);
+    // Every node starts as a root: the deficit nodes are the weak roots, all others are strong
+    // roots, with positive or zero excess. A zero-excess root merges like any other, pushing
+    // nothing, which hangs it on a shortest residual path towards a deficit before excess arrives;
+    // with label 1 everywhere instead (every zero-excess node a weak root), each unit of excess
+    // advances one node per merge and the labels climb one by one: twice slower on the duals of
+    // line arrangements.
+    // Labels: 1 + the residual distance to the nearest deficit, by a breadth-first search
+    // backwards over residual arcs (`scan_` is the queue). They are valid, and contiguous from 1,
+    // which the gap rule relies on. Nodes that reach no deficit are dead from the start.
+    label_.assign(n, dead_);
+    std::size_t head = 0, tail = 0;
     for(Index x = 0; x < n_; ++x) {
       excess_[x] = problem_.source_capacity(x) - problem_.sink_capacity(x);
-      in_bucket_[x] = excess_[x] >= 0;
+      if(excess_[x] < 0) {
+        label_[x] = 1;
+        scan_[tail++] = x;
+      }
     }
-    global_relabel();
-  }
-
-  // Sets every label to 1 + the residual distance to the nearest weak root (all of them have
-  // label 1), found by a breadth-first search backwards over residual arcs with `scan_` as the
-  // queue. Labels stay valid and only grow (valid labels are lower bounds of these). Nodes that
-  // reach no weak root are dead. A tree arc whose child now has a smaller label than its parent
-  // would break (L): it is cut, and the child becomes a strong root with zero excess (which also
-  // keeps every weak root at label 1). The buckets are rebuilt.
-  void global_relabel()
-  {
-    std::size_t head = 0, tail = 0;
-    for(Index x = 0; x < n_; ++x)
-      if(parent_[x] == none && !in_bucket_[x] && label_[x] != dead_) scan_[tail++] = x;
-    std::fill(label_.begin(), label_.end(), dead_);
-    for(std::size_t k = 0; k < tail; ++k) label_[scan_[k]] = 1;
     while(head < tail) {
       const Index x = scan_[head++];
       const Index next_label = label_[x] + 1;
@@ -202,25 +190,11 @@ private:
         }
       }
     }
-    std::fill(count_.begin(), count_.end(), Index(0));
-    std::fill(bucket_head_.begin(), bucket_head_.end(), none);
-    std::fill(bucket_tail_.begin(), bucket_tail_.end(), none);
-    highest_ = 0;
     for(Index x = 0; x < n_; ++x) {
-      current_[x] = first_[x];
       if(label_[x] == dead_) continue;
       ++count_[label_[x]];
-      if(parent_[x] != none && label_[x] < label_[parent_[x]]) {
-        remove_from_parent(x);
-        in_bucket_[x] = 1;
-      }
+      if(excess_[x] >= 0) add_to_bucket(x);
     }
-    for(Index x = 0; x < n_; ++x)
-      if(in_bucket_[x]) {
-        if(label_[x] != dead_) add_to_bucket(x);
-        else in_bucket_[x] = 0;
-      }
-    work_ = 0;
   }
 
   void add_to_bucket(Index x)
@@ -260,8 +234,7 @@ private:
   {
     const Index end = first_[x + 1];
     const Index target = l - 1;
-    work_ += end - current_[x];
-    for(Index a = current_[x]; a < end; ++a, ++st_arcscan)
+    for(Index a = current_[x]; a < end; ++a)
       if(residual_[a] > 0 && label_[head_[a]] == target) {
         current_[x] = a;
         arc = a;
@@ -285,10 +258,10 @@ private:
     }
     for(;;) {
       Index c = scan_[x];
-      while(c != none && label_[c] != l) { c = next_sibling_[c]; ++st_childscan; }
+      while(c != none && label_[c] != l) c = next_sibling_[c];
       if(c != none) {
         scan_[x] = next_sibling_[c];
-        x = c; ++st_visit;
+        x = c;
         scan_[x] = first_child_[x];
         if(can_merge && find_merger(x, l, arc)) {
           merge_and_push(r, x, arc);
@@ -297,10 +270,9 @@ private:
         continue;
       }
       // Post-order: x's children of label l have been relabelled, so (L) holds after this.
-      --count_[l]; ++st_relabel;
+      --count_[l];
       label_[x] = l + 1;
       ++count_[l + 1];
-      work_ += 12;
       current_[x] = first_[x];
       if(x == r) break;
       x = parent_[x];
@@ -324,19 +296,25 @@ private:
       x = old_parent;
     }
 
-    ++st_merge; Capacity delta = excess_[r];
+    Capacity delta = excess_[r];
     excess_[r] = 0;
     x = r;
+    const Index w = head_[arc];
+    bool past_merger = false;
     while(parent_[x] != none) {
+      // From w on, every tree arc has residual > 0 (T), so pushing nothing changes nothing: a
+      // zero-excess root stops there instead of walking to the root.
+      if(x == w) past_merger = true;
+      if(past_merger && delta == 0) return;
       const Index a = parent_arc_[x], p = parent_[x];
-      const Capacity available = residual_[a]; ++st_push;
+      const Capacity available = residual_[a];
       if(delta >= available) {
         // Saturate and split: x keeps what the arc cannot take (exactly 0 when delta == available;
         // it is still made a strong root, so that weak roots keep label 1).
         residual_[a] = 0;
         residual_[reverse_[a]] += available;
         excess_[x] = delta - available;
-        remove_from_parent(x); ++st_split;
+        remove_from_parent(x);
         add_to_bucket(x);
         delta = available;
       } else {
@@ -352,10 +330,9 @@ private:
 
   void kill_tree(Index r)
   {
-    ++st_kill;
     Index x = r;
     for(;;) {
-      --count_[label_[x]]; ++st_killnodes;
+      --count_[label_[x]];
       label_[x] = dead_;
       if(first_child_[x] != none) {
         x = first_child_[x];
@@ -414,9 +391,6 @@ private:
 
   const Max_flow_problem<Capacity>& problem_;
   Index n_ = 0, dead_ = 1, highest_ = 0;
-  // Arcs scanned and nodes relabelled since the last global relabelling, and the amount of such
-  // work after which the next one pays off.
-  std::size_t work_ = 0, relabel_period_ = 0;
   // Arcs in CSR order: 16 bytes per arc with double capacities.
   std::vector<Index> first_, head_, reverse_;
   std::vector<Capacity> residual_;

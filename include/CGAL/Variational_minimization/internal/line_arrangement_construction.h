@@ -8,12 +8,12 @@
 //     the walls; these are the first vertices;
 //  3. line by line, the intersections strictly inside the box, sorted along the line by a filtered key
 //     (ties resolved exactly); equal parameters are one vertex. A vertex gets its index on the
-//     lowest-numbered line through it, which posts it to the inboxes of the other lines through it (no
-//     hashing, no union-find). Each line appends one *slot* per vertex along it to a workspace that is the final
-//     edge array itself (the edge leaving a slot is that slot, so a line of k + 1 slots has k edges);
-//     the last line through a vertex links the slots of that vertex into a cycle sorted by slope: the
-//     rotation system, since sorting the lines by slope sorts their outgoing directions
-//     counterclockwise (out-edges, angles in (-90, 90], by slope, then reversed in-edges);
+//     lowest-numbered line through it, which posts it to the inboxes of the other lines through it
+//     (no hashing, no union-find). Each line appends one *slot* per vertex along it to a workspace
+//     that is the final edge array itself (the edge leaving a slot is that slot, so a line of k + 1
+//     slots has k edges); the last line through a vertex links the slots of that vertex into a cycle
+//     sorted by slope: the rotation system, since sorting the lines by slope sorts their outgoing
+//     directions counterclockwise (out-edges, angles in (-90, 90], by slope, then reversed in-edges);
 //  4. the faces, without walking face cycles (a chain of dependent cache misses): every bounded face
 //     is born at its leftmost vertex, in the wedge between two consecutive out-edges, and the face
 //     labels propagate along the lower chains (from the in-edge of smallest slope to the out-edge of
@@ -45,10 +45,6 @@
 #include <vector>
 #if defined(__linux__)
 #include <sys/mman.h>
-#endif
-#ifdef MDCS_ARR_TIMING
-#include <chrono>
-#include <iostream>
 #endif
 
 namespace CGAL {
@@ -127,28 +123,14 @@ public:
   void run(const std::vector<double>& left_marks, const std::vector<double>& right_marks)
   {
     check_input(left_marks, right_marks);
-#ifdef MDCS_ARR_TIMING
-    auto now = [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
-    double t0 = now();
-#define MDCS_ARR_T(name) { double t1 = now(); std::cerr << name << " " << t1 - t0 << "\n"; t0 = t1; }
-#else
-#define MDCS_ARR_T(name)
-#endif
     select_lines();
     build_boundary(left_marks, right_marks);
-    MDCS_ARR_T("select+boundary");
     reserve_storage();
-    MDCS_ARR_T("count");
     sweep_lines();
-    MDCS_ARR_T("sweep");
     append_walls();
     link_boundary();
-    MDCS_ARR_T("walls");
     build_faces();
-    MDCS_ARR_T("faces");
     compact();
-    MDCS_ARR_T("compact");
-#undef MDCS_ARR_T
     reporter_.finish();
   }
 
@@ -170,7 +152,7 @@ private:
       if(p.x() == q.x() && p.y() == q.y())
         throw std::invalid_argument("MDCS: line " + std::to_string(i) + " is defined by two equal points");
     }
-    // Index space: 32-bit indices, and the rotation system packs an edge index with two flags.
+    // Index space: the wall items pack a line index with a flag and a tag into 32 bits.
     if(arr_.lines_.size() >= (std::size_t(1) << 30))
       throw std::invalid_argument("MDCS: too many lines for Line_arrangement_2");
     auto check_marks = [&](const std::vector<double>& marks, const char* side) {
@@ -497,11 +479,13 @@ private:
           else if(w == BOTTOM) y = b.ymin();
           else y = b.ymax();
         }
+        // Marks, and vertical (horizontal) lines on the floor or ceiling (side walls), give the free
+        // coordinate exactly; prefer them to the computed one.
         for(std::size_t k = first; k < last; ++k) {
-          if(items[w][k].aux & mark_tag) {
-            y = lines_[items[w][k].other].py;   // a mark is exact; prefer it
-            x = (w == LEFT ? b.xmin() : b.xmax());
-          }
+          const Arr_line& o = lines_[items[w][k].other];
+          if(items[w][k].aux & mark_tag) y = o.py;
+          else if((w == BOTTOM || w == TOP) && is_vertical(o)) x = o.px;
+          else if((w == LEFT || w == RIGHT) && is_horizontal(o)) y = o.py;
         }
         const Index v = add_vertex(x, y);
         for(std::size_t k = first; k < last; ++k) {
@@ -785,10 +769,11 @@ private:
     // Exterior sides of the walls: below the floor, right of the right wall, above the ceiling, left
     // of the left wall. Only the corner (xmin, ymin), which has no in-edge, relies on this preset; the
     // propagation reproduces it everywhere else.
-    for(Index g = slot_offset_[m_ + BOTTOM]; g < slot_offset_[m_ + BOTTOM + 1]; ++g) ws[g].right_face = Arrangement::null_index;
-    for(Index g = slot_offset_[m_ + RIGHT]; g < slot_offset_[m_ + RIGHT + 1]; ++g) ws[g].right_face = Arrangement::null_index;
-    for(Index g = slot_offset_[m_ + TOP]; g < slot_offset_[m_ + TOP + 1]; ++g) ws[g].left_face = Arrangement::null_index;
-    for(Index g = slot_offset_[m_ + LEFT]; g < slot_offset_[m_ + LEFT + 1]; ++g) ws[g].left_face = Arrangement::null_index;
+    for(int w = 0; w < 4; ++w) {
+      const bool outside_left = (w == TOP || w == LEFT);
+      for(Index g = slot_offset_[m_ + w]; g < slot_offset_[m_ + w + 1]; ++g)
+        (outside_left ? ws[g].left_face : ws[g].right_face) = Arrangement::null_index;
+    }
 
     std::vector<Index> order(lines);
     for(Index s = 0; s < lines; ++s) order[s] = s;
