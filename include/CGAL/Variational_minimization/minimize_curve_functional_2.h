@@ -53,6 +53,7 @@ Line_arrangement_2 build_curve_arrangement_2(const Curve_problem_2& problem,
   \param arrangement built with `build_curve_arrangement_2(problem, ...)` (its side walls must be split at the
          end values).
   \param weights the edge weights, from `curve_edge_weights_2()`.
+  \param problem the box and the end conditions (the same as for the arrangement).
   \param engine a model of `MaxFlowEngine` (`CGAL::Min_cut::Boykov_kolmogorov_max_flow` or
          `CGAL::Min_cut::Push_relabel_max_flow`).
   \param progress a progress callback, stages `"network"` and `"max-flow"`.
