@@ -224,22 +224,30 @@ void compare_with_oracle(const Arr& a, const std::vector<Line>& lines, const std
   const double scale = (std::max)({ std::abs(b.xmin()), std::abs(b.xmax()), std::abs(b.ymin()), std::abs(b.ymax()),
                                     b.xmax() - b.xmin(), b.ymax() - b.ymin() });
   const double tol = 1e-12 * scale;
+  // The sort keys are converted from the exact values: CGAL::to_double of a lazy EPECK number only
+  // guarantees a relative precision of 1e-5 (Lazy_exact_nt::get_relative_precision_of_to_double), far
+  // coarser than tol on small boxes, and how tight the cached interval is depends on which predicates
+  // forced an exact evaluation before (CGAL's own assertions do in debug builds, not with NDEBUG).
   std::vector<std::pair<std::pair<double, double>, EK::Point_2>> exact;
   for(auto v = o.arr.vertices_begin(); v != o.arr.vertices_end(); ++v)
-    exact.emplace_back(std::make_pair(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())), v->point());
+    exact.emplace_back(std::make_pair(CGAL::to_double(CGAL::exact(v->point().x())),
+                                      CGAL::to_double(CGAL::exact(v->point().y()))),
+                       v->point());
   std::sort(exact.begin(), exact.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<int> used(exact.size(), 0);
   std::vector<const EK::Point_2*> match(a.number_of_vertices(), nullptr);
   std::size_t ambiguous = 0;
   for(std::size_t v = 0; v < a.number_of_vertices(); ++v) {
     const P& p = a.point(Arr::Vertex_index(v));
-    auto it = std::lower_bound(exact.begin(), exact.end(), p.x() - tol,
+    auto it = std::lower_bound(exact.begin(), exact.end(), p.x() - 2 * tol,   // keys: 1 ulp off at most
                                [](const auto& x, double key) { return x.first.first < key; });
     std::size_t found = 0;
     const EK::Point_2* hit = nullptr;
-    for(; it != exact.end() && it->first.first <= p.x() + tol; ++it) {
+    for(; it != exact.end() && it->first.first <= p.x() + 2 * tol; ++it) {
       const EK::Point_2& q = it->second;
-      if(std::abs(CGAL::to_double(q.x() - p.x())) <= tol && std::abs(CGAL::to_double(q.y() - p.y())) <= tol) {
+      // Compared exactly, for the same reason.
+      const EK::FT etol(tol);
+      if(CGAL::abs(q.x() - EK::FT(p.x())) <= etol && CGAL::abs(q.y() - EK::FT(p.y())) <= etol) {
         ++found;
         hit = &q;
         ++used[std::size_t(it - exact.begin())];
