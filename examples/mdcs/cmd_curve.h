@@ -152,6 +152,7 @@ template <class Functional>
 Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& problem, const Functional& G,
                          Progress_bar& progress)
 {
+  problem.validate(); // before anything uses the end values (clear message for out-of-range ends)
   Curve_run run;
   run.problem = problem;
   const auto t0 = std::chrono::steady_clock::now();
