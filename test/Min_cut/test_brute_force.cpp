@@ -6,6 +6,8 @@
 
 #include <CGAL/Min_cut.h>
 
+#include <MDCS_test/min_cut_networks.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -21,36 +23,8 @@ namespace {
 namespace MC = CGAL::Min_cut;
 typedef MC::Flow_network<double> Network;
 const double inf = Network::infinity();
-
-// Capacity of the cut whose source side is `in_source` (bit i = node i), infinite if it crosses an
-// infinite arc. Summed in the order solve_min_cut documents for its chain.
-double cut_capacity(const Network& network, std::uint32_t in_source)
-{
-  auto S = [in_source](std::uint32_t i) { return ((in_source >> i) & 1u) != 0; };
-  double value = 0;
-  bool infinite = false;
-  auto add = [&](double c) {
-    if(c == inf) infinite = true;
-    else value += c;
-  };
-  for(const auto& f : network.facets()) {
-    if(S(f.u) && !S(f.v)) add(f.c_uv);
-    else if(!S(f.u) && S(f.v)) add(f.c_vu);
-  }
-  for(const auto& f : network.source_facets())
-    if(!S(f.node)) add(f.capacity);
-  for(const auto& f : network.sink_facets())
-    if(S(f.node)) add(f.capacity);
-  return infinite ? inf : value;
-}
-
-std::uint32_t as_mask(const std::vector<char>& side)
-{
-  std::uint32_t mask = 0;
-  for(std::size_t i = 0; i < side.size(); ++i)
-    if(side[i]) mask |= 1u << i;
-  return mask;
-}
+using MDCS_test::as_mask;
+using MDCS_test::cut_capacity;
 
 struct Brute_force
 {

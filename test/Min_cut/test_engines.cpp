@@ -7,6 +7,8 @@
 
 #include <CGAL/Min_cut.h>
 
+#include <MDCS_test/min_cut_networks.h>
+
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
 #include <catch2/catch.hpp>
@@ -19,35 +21,11 @@
 
 namespace {
 
+const auto grid = MDCS_test::grid_network; // square grids here: grid(w, w, ...)
+
 namespace MC = CGAL::Min_cut;
 typedef MC::Flow_network<double> Network;
 const double inf = Network::infinity();
-
-// A width x width grid of the variational problems' shape: 4-connected, both directions random,
-// terminal facets on the bottom (source) and top (sink) rows only. `function` makes every downward
-// arc infinite. Integer capacities keep the arithmetic exact, so minimal sides are unique.
-Network grid(std::size_t width, bool function, bool integer, unsigned seed)
-{
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> small(0, 9);
-  std::uniform_real_distribution<double> real(0.05, 1.0);
-  auto cost = [&]() { return integer ? double(small(rng)) : real(rng); };
-  Network network;
-  network.add_nodes(width * width);
-  std::uint32_t id = 0;
-  for(std::size_t y = 0; y < width; ++y)
-    for(std::size_t x = 0; x < width; ++x) {
-      const auto i = Network::Node_index(y * width + x);
-      if(x + 1 < width) network.add_facet(i, i + 1, cost(), cost(), id++);
-      if(y + 1 < width) {
-        const double up = cost(), down = cost();
-        network.add_facet(i, Network::Node_index(i + width), up, function ? inf : down, id++);
-      }
-      if(y == 0) network.add_source_facet(i, 3 * cost(), id++);
-      if(y + 1 == width) network.add_sink_facet(i, 3 * cost(), id++);
-    }
-  return network;
-}
 
 void compare_engines(const Network& network, bool same_sides)
 {
@@ -115,11 +93,11 @@ TEST_CASE("engines: Boykov-Kolmogorov and push-relabel give the same cut on grid
 {
   for(unsigned seed = 1; seed <= 4; ++seed) {
     // Integer capacities: exact arithmetic, so the minimal source sides must coincide.
-    compare_engines(grid(60, false, true, seed), true);
-    compare_engines(grid(60, true, true, seed), true);
+    compare_engines(grid(60, 60, false, true, seed), true);
+    compare_engines(grid(60, 60, true, true, seed), true);
     // Real capacities: same value to rounding; the sides agree too unless rounding breaks a tie.
-    compare_engines(grid(60, false, false, seed), false);
-    compare_engines(grid(60, true, false, seed), false);
+    compare_engines(grid(60, 60, false, false, seed), false);
+    compare_engines(grid(60, 60, true, false, seed), false);
   }
 }
 
@@ -129,7 +107,7 @@ TEST_CASE("engines: Boost's Boykov-Kolmogorov black set is the residual-reachabl
   // over residual arcs from the source: the claim that lets that engine read the sides from colours.
   typedef MC::internal::Csr_flow_graph<double> Flow_graph;
   for(unsigned seed = 1; seed <= 8; ++seed) {
-    const Network network = grid(40, seed % 2 == 0, seed % 4 < 2, seed);
+    const Network network = grid(40, 40, seed % 2 == 0, seed % 4 < 2, seed);
     const MC::Max_flow_problem<double> problem(network);
     Flow_graph flow_graph(problem);
     const std::size_t nv = num_vertices(flow_graph.graph());
@@ -192,6 +170,6 @@ TEST_CASE("engines: an engine returning the wrong number of sides is reported", 
 
 TEST_CASE("engines: Boykov-Kolmogorov and push-relabel agree on a 500 x 500 grid", "[Min_cut][.long]")
 {
-  compare_engines(grid(500, false, true, 99), true);
-  compare_engines(grid(500, true, true, 99), true);
+  compare_engines(grid(500, 500, false, true, 99), true);
+  compare_engines(grid(500, 500, true, true, 99), true);
 }

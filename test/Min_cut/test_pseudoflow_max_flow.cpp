@@ -8,6 +8,8 @@
 #include <CGAL/Min_cut.h>
 #include <CGAL/Min_cut/Pseudoflow_max_flow.h>
 
+#include <MDCS_test/min_cut_networks.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -21,27 +23,9 @@ namespace {
 namespace MC = CGAL::Min_cut;
 typedef MC::Flow_network<double> Network;
 const double inf = Network::infinity();
-
-// Capacity of the cut with source side `mask` (bit i = node i), +inf if it crosses an infinite arc.
-double cut_capacity(const Network& network, std::uint32_t mask)
-{
-  auto S = [mask](std::uint32_t i) { return ((mask >> i) & 1u) != 0; };
-  double value = 0;
-  bool infinite = false;
-  auto add = [&](double c) {
-    if(c == inf) infinite = true;
-    else value += c;
-  };
-  for(const auto& f : network.facets()) {
-    if(S(f.u) && !S(f.v)) add(f.c_uv);
-    else if(!S(f.u) && S(f.v)) add(f.c_vu);
-  }
-  for(const auto& f : network.source_facets())
-    if(!S(f.node)) add(f.capacity);
-  for(const auto& f : network.sink_facets())
-    if(S(f.node)) add(f.capacity);
-  return infinite ? inf : value;
-}
+using MDCS_test::as_mask;
+using MDCS_test::cut_capacity;
+const auto grid = MDCS_test::grid_network;
 
 // The minimum over all partitions and the intersection of the optimal source sides (the minimal
 // one: with integer capacities the optimal sides are closed under intersection).
@@ -64,14 +48,6 @@ std::pair<double, std::uint32_t> enumerate(const Network& network)
   return {best, minimal};
 }
 
-std::uint32_t as_mask(const std::vector<char>& side)
-{
-  std::uint32_t mask = 0;
-  for(std::size_t i = 0; i < side.size(); ++i)
-    if(side[i]) mask |= 1u << i;
-  return mask;
-}
-
 // Random network on n nodes: asymmetric integer capacities, some zero, some infinite, parallel
 // facets allowed, random terminal facets (some infinite, some several on a node).
 Network random_network(std::mt19937& rng, std::uint32_t n)
@@ -92,32 +68,6 @@ Network random_network(std::mt19937& rng, std::uint32_t n)
     network.add_source_facet(Network::Node_index(rng() % n), cost(10), id++);
     network.add_sink_facet(Network::Node_index(rng() % n), cost(10), id++);
   }
-  return network;
-}
-
-// A width x height grid shaped like the variational problems' duals: 4-connected, random
-// capacities both ways, terminals on the bottom (source) and top (sink) rows. `function` makes
-// every downward arc infinite.
-Network grid(std::size_t width, std::size_t height, bool function, bool integer, unsigned seed)
-{
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<int> small(0, 9);
-  std::uniform_real_distribution<double> real(0.05, 1.0);
-  auto cost = [&]() { return integer ? double(small(rng)) : real(rng); };
-  Network network;
-  network.add_nodes(width * height);
-  std::uint32_t id = 0;
-  for(std::size_t y = 0; y < height; ++y)
-    for(std::size_t x = 0; x < width; ++x) {
-      const auto i = Network::Node_index(y * width + x);
-      if(x + 1 < width) network.add_facet(i, i + 1, cost(), cost(), id++);
-      if(y + 1 < height) {
-        const double up = cost(), down = cost();
-        network.add_facet(i, Network::Node_index(i + width), up, function ? inf : down, id++);
-      }
-      if(y == 0) network.add_source_facet(i, 3 * cost(), id++);
-      if(y + 1 == height) network.add_sink_facet(i, 3 * cost(), id++);
-    }
   return network;
 }
 
