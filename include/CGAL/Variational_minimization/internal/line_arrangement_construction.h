@@ -26,6 +26,7 @@
 #define CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_LINE_ARRANGEMENT_CONSTRUCTION_H
 
 #include <CGAL/Variational_minimization/internal/line_arrangement_predicates.h>
+#include <CGAL/Variational_minimization/internal/line_arrangement_sorting.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -82,13 +83,7 @@ class Line_arrangement_builder
   static constexpr std::size_t progress_total = 1000;
   static constexpr std::size_t progress_sweep = 700;
 
-  // A point along a line: enclosing interval of its parameter, the other line, and an auxiliary index.
-  struct Keyed
-  {
-    double lo, hi;
-    Index other;
-    Index aux;
-  };
+  typedef Point_along_line Keyed;
 
   // A vertex found on line `other`, posted to a line of larger index that passes through it. The vertex
   // itself is the `source` of that slot, read when the slot is linked anyway.
@@ -251,128 +246,6 @@ private:
 
   Index wall_line(int w) const { return m_ + Index(w); }
 
-  // ------------------------------------------------------------------------------------------------
-  // Sorting points along a base line: sort by the lower ends of the parameter intervals; then runs of
-  // overlapping intervals ("clusters") are sorted exactly. Any element after a cluster has its lower end
-  // above every upper end of the cluster, so the result is exactly sorted. Calls group(first, last) for
-  // each run of exactly equal parameters.
-  template <class Group>
-  void sort_and_group(const Arr_line& base, std::vector<Keyed>& items, Group group)
-  {
-    sort_by_lower_end(items);
-    const std::size_t count = items.size();
-    std::size_t k = 0;
-    while(k < count) {
-      std::size_t end = k + 1;
-      double reach = items[k].hi;
-      while(end < count && items[end].lo <= reach) {
-        reach = (std::max)(reach, items[end].hi);
-        ++end;
-      }
-      if(end == k + 1)
-        group(k, end);
-      else
-        resolve_cluster(base, items, k, end, group);
-      k = end;
-    }
-  }
-
-  // A run of items whose parameter intervals overlap: exact parameters, computed once per item, then
-  // sorted and grouped. The common cluster is a point where several lines meet, all equal: one pass.
-  template <class Group>
-  void resolve_cluster(const Arr_line& base, std::vector<Keyed>& items, std::size_t first, std::size_t last,
-                       Group& group)
-  {
-    const std::size_t count = last - first;
-    exact_keys_.resize(count);
-    for(std::size_t i = 0; i < count; ++i)
-      exact_key(base, lines_[items[first + i].other], exact_keys_[i]);
-    auto compare = [&](std::size_t a, std::size_t b) {
-      return CGAL::sign(exact_keys_[a].first * exact_keys_[b].second - exact_keys_[b].first * exact_keys_[a].second);
-    };
-    std::size_t i = 1;
-    while(i < count && compare(0, i) == CGAL::ZERO) ++i;
-    if(i == count) {
-      group(first, last);
-      return;
-    }
-    permutation_.resize(count);
-    for(std::size_t j = 0; j < count; ++j) permutation_[j] = j;
-    std::sort(permutation_.begin(), permutation_.end(),
-              [&](std::size_t a, std::size_t b) { return compare(a, b) == CGAL::NEGATIVE; });
-    cluster_buffer_.assign(items.begin() + first, items.begin() + last);
-    for(std::size_t j = 0; j < count; ++j) items[first + j] = cluster_buffer_[permutation_[j]];
-    std::size_t g = 0;
-    for(std::size_t j = 1; j <= count; ++j)
-      if(j == count || compare(permutation_[g], permutation_[j]) != CGAL::ZERO) {
-        group(first + g, first + j);
-        g = j;
-      }
-  }
-
-  // The exact parameter along base of its intersection with o, as n / d with d > 0. When o shares a
-  // defining point with base (pencils are built that way), the parameter is 0 or 1 without arithmetic.
-  static void exact_key(const Arr_line& base, const Arr_line& o, std::pair<Arr_exact_nt, Arr_exact_nt>& key)
-  {
-    auto is = [](double x, double y, double u, double v) { return x == u && y == v; };
-    if(is(o.px, o.py, base.px, base.py) || is(o.qx, o.qy, base.px, base.py)) {
-      key.first = Arr_exact_nt(0);
-      key.second = Arr_exact_nt(1);
-    } else if(is(o.px, o.py, base.qx, base.qy) || is(o.qx, o.qy, base.qx, base.qy)) {
-      key.first = Arr_exact_nt(1);
-      key.second = Arr_exact_nt(1);
-    } else {
-      exact_param(base, o, key.first, key.second);
-      CGAL_assertion(CGAL::sign(key.second) != CGAL::ZERO);
-      if(CGAL::sign(key.second) == CGAL::NEGATIVE) {
-        key.first = -key.first;
-        key.second = -key.second;
-      }
-    }
-  }
-
-  // Sorts by `lo`: a bucket sort with about one item per bucket between the smallest and the largest
-  // key (the bucket index is monotone in the key, so only the buckets need sorting), which is linear
-  // for the spread-out intersections of random lines; std::sort inside crowded buckets.
-  void sort_by_lower_end(std::vector<Keyed>& items)
-  {
-    auto less = [](const Keyed& a, const Keyed& b) { return a.lo < b.lo; };
-    const std::size_t n = items.size();
-    if(n < 64) {
-      std::sort(items.begin(), items.end(), less);
-      return;
-    }
-    double lo = items[0].lo, hi = items[0].lo;
-    for(const Keyed& k : items) {
-      lo = (std::min)(lo, k.lo);
-      hi = (std::max)(hi, k.lo);
-    }
-    const double scale = double(n) / (hi - lo);
-    if(!(hi > lo) || !std::isfinite(scale)) {
-      std::sort(items.begin(), items.end(), less);
-      return;
-    }
-    auto bucket = [&](double key) { return (std::min)(n - 1, std::size_t((key - lo) * scale)); };
-    bucket_start_.assign(n + 1, 0);
-    for(const Keyed& k : items) ++bucket_start_[bucket(k.lo) + 1];
-    for(std::size_t b = 0; b < n; ++b) bucket_start_[b + 1] += bucket_start_[b];
-    sort_buffer_.resize(n);
-    for(const Keyed& k : items) sort_buffer_[bucket_start_[bucket(k.lo)]++] = k;
-    items.swap(sort_buffer_);
-    // bucket_start_[b] is now the end of bucket b.
-    std::size_t begin = 0;
-    for(std::size_t b = 0; b < n; ++b) {
-      const std::size_t end = bucket_start_[b];
-      if(end - begin > 32)
-        std::sort(items.begin() + begin, items.begin() + end, less);
-      else
-        for(std::size_t i = begin + 1; i < end; ++i)
-          for(std::size_t j = i; j > begin && items[j].lo < items[j - 1].lo; --j)
-            std::swap(items[j], items[j - 1]);
-      begin = end;
-    }
-  }
-
   Index add_vertex(double x, double y)
   {
     const CGAL::Bbox_2& b = arr_.box_;
@@ -466,7 +339,7 @@ private:
       const Arr_line& base = lines_[wall_line(w)];
       std::vector<Index>& seq = wall_seq_[w];
       seq.push_back(wall_start[w]);
-      sort_and_group(base, items[w], [&](std::size_t first, std::size_t last) {
+      sorter_.sort_and_group(base, lines_, items[w], [&](std::size_t first, std::size_t last) {
         double x, y;
         const Keyed& rep = items[w][first];
         if(rep.aux & mark_tag) {
@@ -629,7 +502,7 @@ private:
 
       slot_offset_[s] = Index(ws.size());
       push_slot(entry_vertex_[s], line, Arrangement::LINE_EDGE);
-      sort_and_group(l, items, [&](std::size_t first, std::size_t last) {
+      sorter_.sort_and_group(l, lines_, items, [&](std::size_t first, std::size_t last) {
         const Index slot = Index(ws.size());
         Index v = none;
         bool last_line = true;   // s is the line of largest index through the vertex
@@ -917,10 +790,7 @@ private:
   std::vector<double> in_lo_, in_hi_, out_lo_, out_hi_;
   std::array<std::vector<Index>, 4> wall_seq_;
   std::vector<Index> slot_offset_;     // slots of line s (then of the walls): [offset[s], offset[s + 1])
-  std::vector<Keyed> sort_buffer_, cluster_buffer_;
-  std::vector<std::pair<Arr_exact_nt, Arr_exact_nt>> exact_keys_;
-  std::vector<std::size_t> permutation_;
-  std::vector<std::size_t> bucket_start_;
+  Points_along_line_sorter sorter_;   // keeps its scratch buffers between lines
 };
 
 } // namespace internal
