@@ -213,13 +213,15 @@ Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& pro
       }
   }
 
+  // The analytic optimum of the catenoid problem: drawn dashed, and the start of the local descent.
+  const VM::Surface_of_rotation_minimum exact_min =
+    s.functional == "catenoid" ? VM::global_minimum_surface_of_rotation(s.radius) : VM::Surface_of_rotation_minimum();
+
   // Local descent, to show what a local method finds from a natural start.
   std::vector<VM::Svg_point> local_points;
   if(s.local && problem.left.is_fixed() && problem.right.is_fixed()) {
     const std::size_t m = 200;
     std::vector<double> start(m + 1);
-    const auto exact_min = s.functional == "catenoid" ? VM::global_minimum_surface_of_rotation(s.radius)
-                                                      : VM::Surface_of_rotation_minimum();
     for(std::size_t i = 0; i <= m; ++i) {
       const double x = problem.box.xmin() + (problem.box.xmax() - problem.box.xmin()) * double(i) / double(m);
       const double t = double(i) / double(m);
@@ -238,7 +240,7 @@ Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& pro
   // Analytic optimum for the catenoid problem.
   std::vector<VM::Svg_point> analytic;
   if(s.functional == "catenoid") {
-    const auto m = VM::global_minimum_surface_of_rotation(s.radius);
+    const VM::Surface_of_rotation_minimum& m = exact_min;
     run.exact = m.energy;
     if(m.branch == VM::Surface_of_rotation_minimum::Branch::Catenoid) {
       run.exact_branch = "catenoid";

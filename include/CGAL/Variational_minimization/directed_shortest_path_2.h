@@ -45,7 +45,7 @@ Minimal_curve_2 directed_shortest_path_2(const Line_arrangement_2& arrangement, 
 
   const std::size_t nv = arrangement.number_of_vertices();
   const std::size_t ne = arrangement.number_of_edges();
-  CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "shortest-path", 2 * nv);
+  CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "shortest-path", nv);
 
   // Out-edges in compressed rows: the usable edges are the finite-weight ones (vertical edges are infinite).
   std::vector<std::uint32_t> first(nv + 1, 0), in_degree(nv, 0);
@@ -78,7 +78,7 @@ Minimal_curve_2 directed_shortest_path_2(const Line_arrangement_2& arrangement, 
   while(!stack.empty()) {
     const Vertex_index v = stack.back();
     stack.pop_back();
-    report(nv + processed++);
+    report(processed++);
     for(std::uint32_t k = first[v]; k < first[v + 1]; ++k) {
       const Arr::Edge_index e = out[k];
       const Vertex_index w = arrangement.edge(e).target;
