@@ -4,6 +4,7 @@
 
 #include "cli_common.h"
 #include "cmd_curve.h"
+#include "cmd_geodesics.h"
 #include "cmd_mincut.h"
 
 #include <cmath>
@@ -26,7 +27,10 @@ inline const char* demo_usage()
     "  regular           the regular grid C_12 (dynamic programming)\n"
     "  convergence       catenoid energy error vs grid size, random lines vs C_n (CSV + plot)\n"
     "  mincut            the catenoid's dual network written as DIMACS and re-solved by all three max-flow engines\n"
-    "  --quick           smaller grids (for a fast smoke run)\n";
+    "  geodesics         exact geodesic distances and shortest paths on CGAL's elephant and Chinese dragon (a\n"
+    "                    generated torus without CGAL's data), checked against Surface_mesh_shortest_path;\n"
+    "                    in geodesics-MESH/ folders\n"
+    "  --quick           smaller grids, the elephant only (for a fast smoke run)\n";
 }
 
 inline int command_demo(const Options& o)
@@ -184,6 +188,9 @@ inline int command_demo(const Options& o)
     for(const Mincut_report* r : {&pf, &pr, &bk})
       if(std::abs(r->value - cut_value) > 1e-9 * cut_value) all_ok = false;
   }
+
+  // 7. Exact geodesic distances on a triangle mesh, checked against CGAL's Surface_mesh_shortest_path.
+  if(!demo_geodesics(folder, quick, quiet, progress, md)) all_ok = false;
 
   md << "\nTotal time " << std::setprecision(3) << seconds_since(t_start) << " s. Consistency checks: "
      << (all_ok ? "all passed" : "FAILED") << ".\n";

@@ -3,6 +3,7 @@
 #include "cli_common.h"
 #include "cmd_curve.h"
 #include "cmd_demo.h"
+#include "cmd_geodesics.h"
 #include "cmd_mincut.h"
 
 #include <CGAL/MDCS/progress.h>
@@ -17,10 +18,11 @@ const char* main_usage()
 {
   return
     "usage: mdcs <command> [options]        (mdcs <command> --help for its options)\n"
-    "MDCS - Minimal Discrete Curves and Surfaces: globally minimal discrete curves by min-cut.\n"
+    "MDCS - Minimal Discrete Curves and Surfaces: globally minimal discrete curves by min-cut, exact geodesics.\n"
     "commands:\n"
     "  demo      run every capability on default data; pictures and summary.md in an output folder\n"
     "  curve     globally minimal curve for a univariate variational problem (catenoid, arc length, blobs)\n"
+    "  geodesics exact geodesic distances and shortest paths on a triangle mesh (OFF, PLY, OBJ, STL)\n"
     "  mincut    max-flow / min-cut of a DIMACS file with the Min_cut component\n"
     "exit codes: 0 success, 1 runtime error, 2 wrong command line, 3 bad input data, 4 infeasible problem\n";
 }
@@ -36,10 +38,11 @@ int main(int argc, char** argv)
   }
   const std::string command = argv[1];
   const char* usage = command == "curve" ? curve_usage() : command == "demo" ? demo_usage()
-                    : command == "mincut" ? mincut_usage() : main_usage();
+                    : command == "geodesics" ? geodesics_usage() : command == "mincut" ? mincut_usage() : main_usage();
   try {
     if(command == "curve") return command_curve(Options(argc, argv, 2, {"no-local", "quiet", "help"}));
     if(command == "demo") return command_demo(Options(argc, argv, 2, {"quick", "quiet", "help"}));
+    if(command == "geodesics") return command_geodesics(Options(argc, argv, 2, {"stop-at-targets", "compare-cgal", "quiet", "help"}));
     if(command == "mincut") return command_mincut(Options(argc, argv, 2, {"help"}));
     std::cerr << "mdcs: unknown command '" << command << "'\n" << main_usage();
     return EXIT_USAGE;

@@ -1,0 +1,1336 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The exact interval ("window") propagation with side lobes (thesis, chapter 4.1), on the compact mesh.
+//
+// - Every edge holds the lower envelope of its windows: a doubly linked list sorted along the edge.
+// - A window is propagated once, across the face on the far side from its pseudo-source S. On each of
+//   the two other edges of that face a point y is reached either straight from S (the segment S-y
+//   crosses the window: the *central* part) or through the nearer end point P0 or P1 of the window
+//   (the *side lobes*, rooted at P0 and P1 with offsets sigma + |S P0|, sigma + |S P1|). A lobe rooted at
+//   a saddle or boundary vertex is exactly the pseudo-source MMP needs there; a lobe rooted inside an edge
+//   covers any numerical gap between neighbouring windows.
+// - Windows come out of a binary heap by their minimal distance (lazy deletion by a stamp).
+// - Pruning (Xin and Wang's filter): a window, or a new piece of one, is dropped when a known vertex
+//   distance plus a straight segment beats it on its whole extent; vertex distances are kept current
+//   from every window that reaches a vertex.
+
+#ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_EXACT_WINDOW_PROPAGATION_H
+#define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_EXACT_WINDOW_PROPAGATION_H
+
+#include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/geodesic_window.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polyhedral_geodesics_3 {
+namespace internal {
+
+template <class FT>
+class Exact_window_propagation
+{
+public:
+  typedef typename Geodesic_mesh<FT>::Index Index;
+  typedef Geodesic_mesh<FT> Mesh;
+  typedef Geodesic_window<FT> Window;
+
+  struct Path_node
+  {
+    enum Kind { VERTEX, EDGE, FACE };
+    Kind kind;
+    Index index;                   // vertex, compact halfedge, or face
+    FT t;                          // EDGE: the point is (1-t) source + t target of the halfedge
+    std::array<FT, 3> barycentric; // FACE
+    std::array<FT, 3> point;       // the 3D point
+  };
+
+  struct Point_distance
+  {
+    FT distance;
+    Index source;
+  };
+
+  explicit Exact_window_propagation(const Mesh& mesh) : mesh_(mesh)
+  {
+    // The sentinel of "no distance yet": large, but far from overflowing when a few lengths are added.
+    unreached_ = FT(std::numeric_limits<double>::max() / 16);
+    if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
+      relative_tolerance_ = FT(64) * FT(std::numeric_limits<FT>::epsilon());
+    else
+      relative_tolerance_ = FT(0);
+    // Shortest paths can pass through saddle vertices (angle sum above 2 pi) and boundary vertices only.
+    // Flat vertices are included: rounding decides their side.
+    vertex_is_pseudo_source_.assign(mesh_.number_of_vertices, 0);
+    for(std::size_t v = 0; v < mesh_.number_of_vertices; ++v)
+      vertex_is_pseudo_source_[v] = mesh_.vertex_on_boundary[v] ||
+                                    to_double_value(mesh_.vertex_angle_sum[v]) > 2 * 3.14159265358979323846 - 1e-9;
+    clear();
+  }
+
+  void clear()
+  {
+    windows_.clear();
+    free_windows_.clear();
+    heap_.clear();
+
+    edge_first_.assign(mesh_.number_of_edges, -1);
+    edge_closed_.assign(mesh_.number_of_edges, 0);
+    since_release_ = 0;
+    release_interval_ = mesh_.number_of_edges / 2 + 1024;
+    dist_.assign(mesh_.number_of_vertices, unreached_);
+    vertex_source_.assign(mesh_.number_of_vertices, -1);
+    vertex_stamp_.assign(mesh_.number_of_vertices, 0);
+    expanded_stamp_.assign(mesh_.number_of_vertices, std::uint32_t(-1));
+    face_sources_.clear();
+    stats_ = Geodesic_statistics();
+    live_windows_ = 0;
+    front_ = FT(0);
+    stopped_early_ = false;
+  }
+
+  void set_keep_windows(bool keep) { keep_windows_ = keep; }
+  void set_distance_limit(FT limit) { limit_ = limit; has_limit_ = true; }
+  void clear_distance_limit() { has_limit_ = false; }
+  void set_stop_targets(const std::vector<Index>& targets) { stop_targets_ = targets; }
+  // Side lobes at window ends on vertices (redundant with the vertex expansion) and at ends where the
+  // neighbouring window continues the wavefront (redundant up to rounding). Both off by default.
+  void set_lobe_options(bool lobes_at_vertices, bool lobes_at_contiguous_ends)
+  {
+    lobes_at_vertices_ = lobes_at_vertices;
+    lobes_at_contiguous_ends_ = lobes_at_contiguous_ends;
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Sources
+
+  void add_vertex_source(Index v, Index id)
+  {
+    if(v < 0 || std::size_t(v) >= mesh_.number_of_vertices)
+      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: source vertex not in the mesh");
+    update_vertex(v, FT(0), id);
+    expand_vertex(v);
+  }
+
+  void add_face_source(Index f, const std::array<FT, 3>& b, Index id)
+  {
+    if(f < 0 || std::size_t(f) >= mesh_.number_of_faces)
+      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: source face not in the mesh");
+    int zeros = 0;
+    for(int k = 0; k < 3; ++k)
+      if(b[k] == FT(0))
+        ++zeros;
+    if(zeros >= 2) {
+      for(int k = 0; k < 3; ++k)
+        if(b[k] != FT(0))
+          return add_vertex_source(mesh_.source(3 * f + k), id);
+    }
+    add_point_source_in_face(f, b, id);
+    if(zeros == 1) {
+      // On an edge: the point is also a source inside the face on the other side, and the edge itself
+      // carries the distance along it.
+      int k = 0;
+      while(b[(k + 2) % 3] != FT(0))
+        ++k;
+      const Index g = 3 * f + k;         // the halfedge carrying the point (corners k and k+1)
+      const FT len = mesh_.he_length[g];
+      const FT t = b[(k + 1) % 3] * len;
+      insert_piece_no_propagation(g, FT(0), len, t, FT(0), FT(0), id);
+      const Index tw = mesh_.he_twin[g];
+      if(tw >= 0) {
+        const Index f2 = Mesh::face_of(tw);
+        std::array<FT, 3> b2 = {FT(0), FT(0), FT(0)};
+        b2[tw % 3] = b[(k + 1) % 3];       // source(tw) == target(g)
+        b2[(tw % 3 + 1) % 3] = b[k];       // target(tw) == source(g)
+        add_point_source_in_face(f2, b2, id);
+      }
+    }
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Propagation
+
+  template <class Progress>
+  void run(Progress& progress)
+  {
+    const char* stage = "geodesic propagation";
+    // several windows per edge are typical; reserving avoids most of the copying of a growing vector
+    if(windows_.capacity() < mesh_.number_of_edges)
+      windows_.reserve(mesh_.number_of_edges);
+    if(!progress(stage, 0.0))
+      throw MDCS::Operation_cancelled(stage);
+    std::size_t pops = 0;
+    while(!heap_.empty()) {
+      std::pop_heap(heap_.begin(), heap_.end(), Heap_order());
+      const Heap_entry top = heap_.back();
+      heap_.pop_back();
+      if(top.window < 0) {
+        const Index v = -top.window - 1;
+        if(top.stamp != vertex_stamp_[std::size_t(v)] || expanded_stamp_[std::size_t(v)] == top.stamp)
+          continue;
+        front_ = top.key;
+        if(has_limit_ && top.key > limit_) {
+          stopped_early_ = true;
+          break;
+        }
+        expand_vertex(v);
+        continue;
+      }
+      Window& w = windows_[std::size_t(top.window)];
+      if(!w.alive || w.stamp != top.stamp || w.processed)
+        continue;
+      front_ = top.key;
+      if(has_limit_ && top.key > limit_) {
+        stopped_early_ = true;
+        break;
+      }
+      if(!stop_targets_.empty() && (pops & 15) == 0 && stop_targets_final(top.key)) {
+        stopped_early_ = true;
+        break;
+      }
+      w.processed = true;
+      propagate(top.window);
+      ++stats_.windows_propagated;
+      if(!keep_windows_ && ++since_release_ >= release_interval_) {
+        since_release_ = 0;
+        release_final_edges(top.key);
+        // a scan costs O(edges + windows): space the scans so that it stays O(1) per propagated window
+        release_interval_ = mesh_.number_of_edges / 2 + live_windows_ + 1024;
+      }
+      if((++pops & 0xFFFF) == 0) {
+        if(!progress(stage, fraction_final(top.key)))
+          throw MDCS::Operation_cancelled(stage);
+      }
+    }
+    if(stopped_early_) {
+      // Only distances below the front are final; report the others as unreachable, never as a wrong value.
+      const FT bound = has_limit_ && front_ > limit_ ? limit_ : front_;
+      for(std::size_t v = 0; v < dist_.size(); ++v)
+        if(dist_[v] > bound) {
+          dist_[v] = unreached_;
+          vertex_source_[v] = -1;
+        }
+      heap_.clear();
+      heap_.shrink_to_fit();
+    } else if(has_limit_) {
+      for(std::size_t v = 0; v < dist_.size(); ++v)
+        if(dist_[v] > limit_) {
+          dist_[v] = unreached_;
+          vertex_source_[v] = -1;
+        }
+    }
+    stats_.stopped_early = stopped_early_;
+    stats_.stored_windows = live_windows_;
+    if(!keep_windows_) {
+      std::vector<Window>().swap(windows_);
+      std::vector<Index>().swap(free_windows_);
+      std::vector<Index>(mesh_.number_of_edges, -1).swap(edge_first_);
+    }
+    std::vector<Heap_entry>().swap(heap_);
+    if(!progress(stage, 1.0))
+      throw MDCS::Operation_cancelled(stage);
+  }
+
+  FT vertex_distance(Index v) const
+  {
+    return dist_[std::size_t(v)] >= unreached_ ? FT(std::numeric_limits<double>::infinity()) : dist_[std::size_t(v)];
+  }
+
+  Index vertex_source(Index v) const { return vertex_source_[std::size_t(v)]; }
+
+  const Geodesic_statistics& statistics() const { return stats_; }
+
+  // Calls f(window) for every stored window of edge e, in order along the edge (tests and debugging).
+  template <class F>
+  void for_each_window_on_edge(Index e, F f) const
+  {
+    if(windows_.empty())
+      return;
+    for(Index wi = edge_first_[std::size_t(e)]; wi >= 0; wi = windows_[std::size_t(wi)].next)
+      f(windows_[std::size_t(wi)]);
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Queries (full field)
+
+  Point_distance distance_at(Index f, const std::array<FT, 3>& b) const
+  {
+    Candidate c = best_candidate_in_face(f, b, -1, -1);
+    if(c.kind == Candidate::NONE || !finite_answer(c.value))
+      return {FT(std::numeric_limits<double>::infinity()), -1};
+    return {c.value, c.source};
+  }
+
+  // Emits the path from the point (f, b) to its nearest source: the point itself, every edge crossing
+  // and vertex, the source. Emits nothing if the point is unreachable.
+  template <class Emit>
+  void trace_path(Index f, const std::array<FT, 3>& b, Emit emit) const
+  {
+    Candidate first = best_candidate_in_face(f, b, -1, -1);
+    if(first.kind == Candidate::NONE || !finite_answer(first.value))
+      return;
+    ensure_vertex_star();
+    // The current point as a list of (face, barycentric) incarnations, plus what it is.
+    std::vector<std::pair<Index, std::array<FT, 3>>> where;
+    Index at_vertex = -1, on_halfedge = -1;
+    int zeros = 0, nonzero = -1;
+    for(int k = 0; k < 3; ++k) {
+      if(b[k] == FT(0)) ++zeros;
+      else nonzero = k;
+    }
+    if(zeros >= 2) {
+      at_vertex = mesh_.source(3 * f + nonzero);
+      emit(vertex_node(at_vertex));
+      where = vertex_incarnations(at_vertex);
+    } else {
+      emit(face_node(f, b));
+      where.push_back({f, b});
+      if(zeros == 1) {
+        int k = 0;
+        while(b[(k + 2) % 3] != FT(0)) ++k;
+        on_halfedge = 3 * f + k;
+        add_twin_incarnation(on_halfedge, b[(k + 1) % 3], where);
+      }
+    }
+    FT current = first.value;
+    Visited visited;
+    if(at_vertex >= 0)
+      visited.add_vertex(coincident_vertices(at_vertex));
+    const std::size_t max_steps = 8 * mesh_.number_of_faces + 64;
+    for(std::size_t step = 0; step < max_steps; ++step) {
+      if(at_vertex >= 0 && dist_[std::size_t(at_vertex)] == FT(0))
+        return; // a source vertex
+      Candidate best;
+      for(const auto& inc : where) {
+        Candidate c = best_candidate_in_face(inc.first, inc.second, at_vertex,
+                                             on_halfedge < 0 ? -1 : mesh_.he_edge[std::size_t(on_halfedge)], &visited);
+        if(c.kind != Candidate::NONE && (best.kind == Candidate::NONE || c.value < best.value))
+          best = c;
+      }
+      if(best.kind == Candidate::NONE)
+        throw std::runtime_error("CGAL::Polyhedral_geodesics_3: shortest path tracing lost the distance field");
+      switch(best.kind) {
+      case Candidate::FACE_SOURCE:
+        emit(face_node(best.face, best.barycentric));
+        return;
+      case Candidate::VERTEX:
+        at_vertex = best.vertex;
+        on_halfedge = -1;
+        visited.add_vertex(coincident_vertices(at_vertex));
+        emit(vertex_node(at_vertex));
+        where = vertex_incarnations(at_vertex);
+        break;
+      case Candidate::EDGE_POINT: {
+        const Index g = best.halfedge;
+        const FT len = mesh_.he_length[std::size_t(g)];
+        const FT t = best.t;
+        if(!(t > FT(0))) {
+          at_vertex = mesh_.source(g);
+          on_halfedge = -1;
+          visited.add_vertex(coincident_vertices(at_vertex));
+          emit(vertex_node(at_vertex));
+          where = vertex_incarnations(at_vertex);
+        } else if(!(t < len)) {
+          at_vertex = mesh_.target(g);
+          on_halfedge = -1;
+          visited.add_vertex(coincident_vertices(at_vertex));
+          emit(vertex_node(at_vertex));
+          where = vertex_incarnations(at_vertex);
+        } else {
+          at_vertex = -1;
+          on_halfedge = g;
+          {
+            const Index e = mesh_.he_edge[std::size_t(g)];
+            visited.add_edge_point(e, g == mesh_.edge_halfedge[std::size_t(e)] ? t : len - t);
+          }
+          const FT r = t / len;
+          emit(edge_node(g, r));
+          const Index fg = Mesh::face_of(g);
+          std::array<FT, 3> bg = {FT(0), FT(0), FT(0)};
+          bg[g % 3] = FT(1) - r;
+          bg[(g % 3 + 1) % 3] = r;
+          where.clear();
+          where.push_back({fg, bg});
+          add_twin_incarnation(g, r, where);
+        }
+        break;
+      }
+      default:
+        break;
+      }
+      if(!(best.value < current + current * FT(1e-9) + FT(1e-300)))
+        throw std::runtime_error("CGAL::Polyhedral_geodesics_3: shortest path tracing did not descend");
+      current = best.value;
+    }
+    throw std::runtime_error("CGAL::Polyhedral_geodesics_3: shortest path tracing did not reach a source");
+  }
+
+private:
+  // ------------------------------------------------------------------------------------------------
+  // Heap
+
+  struct Heap_entry
+  {
+    FT key;
+    Index window;
+    std::uint32_t stamp;
+  };
+  struct Heap_order
+  {
+    bool operator()(const Heap_entry& a, const Heap_entry& b) const { return b.key < a.key; }
+  };
+
+  void push(Index wi)
+  {
+    const Window& w = windows_[std::size_t(wi)];
+    heap_.push_back(Heap_entry{window_min_distance(w.b0, w.b1, w.sx, w.sy, w.sigma), wi, w.stamp});
+    std::push_heap(heap_.begin(), heap_.end(), Heap_order());
+    note_memory();
+  }
+
+  void note_memory()
+  {
+    const std::size_t bytes = windows_.capacity() * sizeof(Window) + heap_.capacity() * sizeof(Heap_entry);
+    if(bytes > stats_.peak_memory_bytes)
+      stats_.peak_memory_bytes = bytes;
+  }
+
+  // Distances-only mode frees the windows behind the front: an edge covered end to end by windows whose
+  // values all lie below the front will never change again (everything still to come is at least the
+  // front), so its windows are released and later candidates are rejected at once.
+  void release_final_edges(const FT& front)
+  {
+    for(std::size_t e = 0; e < edge_first_.size(); ++e) {
+      if(edge_closed_[e])
+        continue;
+      Index wi = edge_first_[e];
+      if(wi < 0)
+        continue;
+      const FT L = mesh_.he_length[std::size_t(mesh_.edge_halfedge[e])];
+      FT covered = FT(0);
+      bool final_edge = true;
+      for(; wi >= 0; wi = windows_[std::size_t(wi)].next) {
+        const Window& w = windows_[std::size_t(wi)];
+        if(w.b0 > covered || !w.processed ||
+           !(window_distance_at(w.b0, w.sx, w.sy, w.sigma) < front) ||
+           !(window_distance_at(w.b1, w.sx, w.sy, w.sigma) < front)) {
+          final_edge = false;
+          break;
+        }
+        covered = w.b1;
+      }
+      if(!final_edge || covered < L)
+        continue;
+      while(edge_first_[e] >= 0)
+        kill_window(edge_first_[e]);
+      edge_closed_[e] = 1;
+    }
+  }
+
+  bool stop_targets_final(const FT& key) const
+  {
+    for(Index v : stop_targets_)
+      if(!(dist_[std::size_t(v)] <= key))
+        return false;
+    return true;
+  }
+
+  double fraction_final(const FT& key) const
+  {
+    std::size_t n = 0;
+    for(const FT& d : dist_)
+      if(d <= key)
+        ++n;
+    return dist_.empty() ? 1.0 : double(n) / double(dist_.size());
+  }
+
+  bool finite_answer(const FT& value) const
+  {
+    if(!(value < unreached_))
+      return false;
+    if(stopped_early_) {
+      const FT bound = has_limit_ && front_ > limit_ ? limit_ : front_;
+      return value <= bound;
+    }
+    return !has_limit_ || value <= limit_;
+  }
+
+  // The path through a vertex (value `via`) beats the window (value `d`) by more than rounding.
+  bool dominated(const FT& via, const FT& d) const { return via + relative_tolerance_ * d < d; }
+
+  void update_vertex(Index v, const FT& d, Index source)
+  {
+    if(d < dist_[std::size_t(v)]) {
+      dist_[std::size_t(v)] = d;
+      vertex_source_[std::size_t(v)] = source;
+      if(vertex_is_pseudo_source_[std::size_t(v)]) {
+        // A shortest path may bend here: once this distance is final, the vertex emits its own windows.
+        const std::uint32_t stamp = ++vertex_stamp_[std::size_t(v)];
+        heap_.push_back(Heap_entry{d, -v - 1, stamp});
+        std::push_heap(heap_.begin(), heap_.end(), Heap_order());
+      }
+    }
+  }
+
+  // The vertex as a pseudo-source with its current distance: a window over the opposite edge of every
+  // incident face (it sees that edge entirely), and the arc length along every incident edge. These are the
+  // side lobes rooted at the vertex, emitted once, when its distance is final, instead of by every window
+  // that ends there (those lobes would carry the window's own, possibly larger, value at the vertex; and
+  // pruning may remove the window that would have carried the best one).
+  void expand_vertex(Index v)
+  {
+    ensure_vertex_star();
+    expanded_stamp_[std::size_t(v)] = vertex_stamp_[std::size_t(v)];
+    const FT d = dist_[std::size_t(v)];
+    const Index id = vertex_source_[std::size_t(v)];
+    for(Index k = star_begin_[std::size_t(v)]; k < star_begin_[std::size_t(v) + 1]; ++k) {
+      const Index h = star_[std::size_t(k)];  // source(h) == v
+      const Index g = Mesh::next(h);          // the edge opposite v in the face of h
+      const auto& p = mesh_.he_opposite[std::size_t(g)];
+      insert_piece(g, FT(0), mesh_.he_length[std::size_t(g)], p.x, p.y, d, id);
+      insert_piece_no_propagation(h, FT(0), mesh_.he_length[std::size_t(h)], FT(0), FT(0), d, id);
+      const Index hp = Mesh::prev(h);
+      insert_piece_no_propagation(hp, FT(0), mesh_.he_length[std::size_t(hp)], mesh_.he_length[std::size_t(hp)],
+                                  FT(0), d, id);
+    }
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Sources inside faces
+
+  struct Face_source
+  {
+    Index face;
+    std::array<FT, 3> barycentric;
+    Index id;
+  };
+
+  // The point with barycentric coordinates b of face f, in the frame of the face's halfedge 3f+k.
+  Point_2_ft<FT> point_in_halfedge_frame(Index f, const std::array<FT, 3>& b, int k) const
+  {
+    const Index g = 3 * f + k;
+    const auto& o = mesh_.he_opposite[std::size_t(g)];
+    const FT len = mesh_.he_length[std::size_t(g)];
+    const FT wt = b[std::size_t((k + 1) % 3)], wo = b[std::size_t((k + 2) % 3)];
+    return Point_2_ft<FT>{wt * len + wo * o.x, wo * o.y};
+  }
+
+  void add_point_source_in_face(Index f, const std::array<FT, 3>& b, Index id)
+  {
+    face_sources_.push_back(Face_source{f, b, id});
+    for(int k = 0; k < 3; ++k) {
+      const Index g = 3 * f + k;
+      const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, k);
+      // the distance to the corner source(g)
+      update_vertex(mesh_.source(g), distance_2(FT(0), FT(0), p.x, p.y), id);
+      if(b[std::size_t((k + 2) % 3)] == FT(0))
+        continue; // the point is on this edge: handled by the caller
+      insert_piece(g, FT(0), mesh_.he_length[std::size_t(g)], p.x, p.y, FT(0), id);
+    }
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Vertex stars (for vertex sources and path tracing)
+
+  void ensure_vertex_star() const
+  {
+    if(!star_begin_.empty())
+      return;
+    const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
+    star_begin_.assign(nv + 1, 0);
+    for(std::size_t h = 0; h < nh; ++h)
+      ++star_begin_[std::size_t(mesh_.he_source[h]) + 1];
+    for(std::size_t v = 0; v < nv; ++v)
+      star_begin_[v + 1] += star_begin_[v];
+    star_.assign(nh, 0);
+    std::vector<Index> fill(star_begin_.begin(), star_begin_.end() - 1);
+    for(std::size_t h = 0; h < nh; ++h)
+      star_[std::size_t(fill[std::size_t(mesh_.he_source[h])]++)] = Index(h);
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Window storage and the lower envelope on an edge
+
+  Index allocate_window()
+  {
+    ++live_windows_;
+    if(live_windows_ > stats_.peak_live_windows)
+      stats_.peak_live_windows = live_windows_;
+    if(!free_windows_.empty()) {
+      const Index i = free_windows_.back();
+      free_windows_.pop_back();
+      return i;
+    }
+    windows_.push_back(Window());
+    windows_.back().stamp = 0;
+    return Index(windows_.size() - 1);
+  }
+
+  void kill_window(Index wi)
+  {
+    Window& w = windows_[std::size_t(wi)];
+    if(w.prev >= 0) windows_[std::size_t(w.prev)].next = w.next;
+    else edge_first_[std::size_t(w.edge)] = w.next;
+    if(w.next >= 0) windows_[std::size_t(w.next)].prev = w.prev;
+    w.alive = false;
+    ++w.stamp;
+    --live_windows_;
+    free_windows_.push_back(wi);
+  }
+
+  // Links a new window after `after` (-1: at the front of the edge's list).
+  Index create_window(Index edge, Index after, const FT& b0, const FT& b1, const FT& sx, const FT& sy,
+                      const FT& sigma, Index into, Index source, bool processed)
+  {
+    const Index wi = allocate_window();
+    Window& w = windows_[std::size_t(wi)];
+    const std::uint32_t stamp = w.stamp + 1;
+    w = Window{b0, b1, sx, sy, sigma, edge, -1, -1, into, source, stamp, processed || into < 0, true};
+    if(after < 0) {
+      w.next = edge_first_[std::size_t(edge)];
+      edge_first_[std::size_t(edge)] = wi;
+    } else {
+      w.prev = after;
+      w.next = windows_[std::size_t(after)].next;
+      windows_[std::size_t(after)].next = wi;
+    }
+    if(w.next >= 0)
+      windows_[std::size_t(w.next)].prev = wi;
+    ++stats_.windows_created;
+    if(!w.processed)
+      push(wi);
+    return wi;
+  }
+
+  struct Interval
+  {
+    FT lo, hi;
+  };
+
+  // The sub-intervals of [lo, hi] where the new function (sw, aw, hw) is strictly below window v.
+  void new_window_wins(const FT& aw, const FT& hw, const FT& sw, const Window& v, const FT& lo, const FT& hi,
+                       std::vector<Interval>& out) const
+  {
+    FT roots[2];
+    const int n = window_crossings(aw, hw, sw, v.sx, v.sy, v.sigma, lo, hi, roots);
+    FT cuts[4];
+    int m = 0;
+    cuts[m++] = lo;
+    for(int i = 0; i < n; ++i)
+      cuts[m++] = roots[i];
+    cuts[m++] = hi;
+    for(int i = 0; i + 1 < m; ++i) {
+      const FT a = cuts[i], c = cuts[i + 1];
+      if(!(a < c))
+        continue;
+      const FT mid = (a + c) / FT(2);
+      // win by more than rounding: two copies of the same distance function (one pseudo-source reached
+      // through two unfoldings) must not fragment each other
+      const FT old_value = window_distance_at(mid, v.sx, v.sy, v.sigma);
+      if(window_distance_at(mid, aw, hw, sw) + relative_tolerance_ * old_value < old_value) {
+        if(!out.empty() && out.back().hi == a)
+          out.back().hi = c;
+        else
+          out.push_back(Interval{a, c});
+      }
+    }
+  }
+
+  // Inserts the candidate window [t0, t1] with pseudo-source (sx, sy) and offset sigma, given in the
+  // frame of halfedge g, into the lower envelope of g's edge. It propagates into the face of g's twin.
+  void insert_piece(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source)
+  {
+    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, mesh_.he_twin[std::size_t(g)]);
+  }
+
+  void insert_piece_no_propagation(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source)
+  {
+    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, -1);
+  }
+
+  void insert_piece_impl(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source, Index into)
+  {
+    const Index e = mesh_.he_edge[std::size_t(g)];
+    const Index hc = mesh_.edge_halfedge[std::size_t(e)];
+    const FT L = mesh_.he_length[std::size_t(g)];
+    if(g != hc) {
+      const FT n0 = L - t1, n1 = L - t0;
+      t0 = n0;
+      t1 = n1;
+      sx = L - sx;
+      sy = -sy;
+    }
+    if(t0 < FT(0)) t0 = FT(0);
+    if(t1 > L) t1 = L;
+    if(t1 < t0) t1 = t0;
+    const Index v0 = mesh_.source(hc), v1 = mesh_.target(hc);
+    const FT d0 = window_distance_at(t0, sx, sy, sigma), d1 = window_distance_at(t1, sx, sy, sigma);
+    // Xin-Wang filter on the new piece: the end vertices of the edge plus the edge beat it everywhere.
+    if(dominated(dist_[std::size_t(v0)] + t1, d1) || dominated(dist_[std::size_t(v1)] + (L - t0), d0)) {
+      ++stats_.windows_pruned;
+      return;
+    }
+    if(t0 == FT(0)) update_vertex(v0, d0, source);
+    if(t1 == L) update_vertex(v1, d1, source);
+    if(edge_closed_[std::size_t(e)])
+      return; // the edge's distance function is final and below everything that can still arrive
+
+    if(L == FT(0)) {
+      // A zero-length edge holds one point: keep the best window there.
+      const Index old = edge_first_[std::size_t(e)];
+      if(old >= 0) {
+        const Window& o = windows_[std::size_t(old)];
+        if(!(d0 < window_distance_at(FT(0), o.sx, o.sy, o.sigma)))
+          return;
+        kill_window(old);
+      }
+      create_window(e, -1, FT(0), FT(0), sx, sy, sigma, into, source, false);
+      return;
+    }
+    const FT tiny = relative_tolerance_ * L;
+    if(!(t1 - t0 > tiny))
+      return;
+
+    // Sweep the windows overlapping (t0, t1): the new window survives in the gaps and where it wins.
+    survive_.clear();
+    changes_.clear();
+    FT cursor = t0;
+    Index last_before = -1; // the last window that starts before t0 (insertion point)
+    for(Index vi = edge_first_[std::size_t(e)]; vi >= 0; vi = windows_[std::size_t(vi)].next) {
+      const Window& v = windows_[std::size_t(vi)];
+      if(!(v.b1 > t0)) {
+        last_before = vi;
+        continue;
+      }
+      if(!(v.b0 < t1))
+        break;
+      if(v.b0 > cursor)
+        append_interval(survive_, cursor, v.b0);
+      const FT lo = v.b0 > t0 ? v.b0 : t0;
+      const FT hi = v.b1 < t1 ? v.b1 : t1;
+      wins_.clear();
+      new_window_wins(sx, sy, sigma, v, lo, hi, wins_);
+      for(const Interval& iv : wins_)
+        append_interval(survive_, iv.lo, iv.hi);
+      if(!wins_.empty())
+        changes_.push_back(Change{vi, std::size_t(changes_win_.size()), wins_.size()});
+      changes_win_.insert(changes_win_.end(), wins_.begin(), wins_.end());
+      if(v.b1 > cursor)
+        cursor = v.b1;
+    }
+    if(cursor < t1)
+      append_interval(survive_, cursor, t1);
+    // drop slivers (they cannot matter beyond rounding; vertex distances were updated above)
+    std::size_t kept = 0;
+    for(const Interval& iv : survive_)
+      if(iv.hi - iv.lo > tiny)
+        survive_[kept++] = iv;
+    survive_.resize(kept);
+    if(survive_.empty()) {
+      changes_win_.clear();
+      return;
+    }
+
+    // Cut the losing parts out of the old windows.
+    for(const Change& c : changes_) {
+      Window& v = windows_[std::size_t(c.window)];
+      remain_.clear();
+      FT start = v.b0;
+      for(std::size_t i = 0; i < c.count; ++i) {
+        const Interval& iv = changes_win_[c.first + i];
+        if(iv.lo - start > tiny)
+          remain_.push_back(Interval{start, iv.lo});
+        start = iv.hi;
+      }
+      if(v.b1 - start > tiny)
+        remain_.push_back(Interval{start, v.b1});
+      if(remain_.empty()) {
+        kill_window(c.window);
+        continue;
+      }
+      const bool changed = remain_.front().lo != v.b0 || remain_.front().hi != v.b1;
+      const FT vsx = v.sx, vsy = v.sy, vsigma = v.sigma;
+      const Index vinto = v.into_halfedge, vsource = v.source;
+      const bool vprocessed = v.processed;
+      v.b0 = remain_.front().lo;
+      v.b1 = remain_.front().hi;
+      if(changed) {
+        ++v.stamp;
+        if(!v.processed)
+          push(c.window);
+      }
+      Index after = c.window;
+      for(std::size_t i = 1; i < remain_.size(); ++i)
+        after = create_window(e, after, remain_[i].lo, remain_[i].hi, vsx, vsy, vsigma, vinto, vsource, vprocessed);
+    }
+    changes_win_.clear();
+
+    // Link the surviving pieces of the new window at their places.
+    Index after = last_before;
+    for(const Interval& iv : survive_) {
+      Index next = after < 0 ? edge_first_[std::size_t(e)] : windows_[std::size_t(after)].next;
+      while(next >= 0 && !(iv.lo < windows_[std::size_t(next)].b0)) {
+        after = next;
+        next = windows_[std::size_t(next)].next;
+      }
+      // A window split by a vertex meets itself again on the edges beyond: join the pieces of one
+      // distance function instead of propagating them separately.
+      if(after >= 0 && same_function(windows_[std::size_t(after)], sx, sy, sigma, into) &&
+         windows_[std::size_t(after)].b1 == iv.lo) {
+        Window& p = windows_[std::size_t(after)];
+        p.b1 = iv.hi;
+        ++p.stamp;
+        ++stats_.windows_merged;
+        merge_with_next(after);
+        push(after);
+        continue;
+      }
+      after = create_window(e, after, iv.lo, iv.hi, sx, sy, sigma, into, source, false);
+      merge_with_next(after);
+    }
+  }
+
+  bool same_function(const Window& w, const FT& sx, const FT& sy, const FT& sigma, Index into) const
+  {
+    using std::abs;
+    if(w.processed || w.into_halfedge != into)
+      return false;
+    const FT scale = abs(sx) + abs(sy) + sigma + (w.b1 - w.b0);
+    const FT tol = FT(16) * relative_tolerance_ * scale;
+    return abs(w.sx - sx) <= tol && abs(w.sy - sy) <= tol && abs(w.sigma - sigma) <= tol;
+  }
+
+  // Joins window wi with its successor if they continue each other with the same distance function.
+  void merge_with_next(Index wi)
+  {
+    Window& w = windows_[std::size_t(wi)];
+    const Index ni = w.next;
+    if(ni < 0)
+      return;
+    const Window& n = windows_[std::size_t(ni)];
+    if(n.b0 != w.b1 || !same_function(n, w.sx, w.sy, w.sigma, w.into_halfedge) || w.processed)
+      return;
+    const FT b1 = n.b1;
+    kill_window(ni);
+    Window& w2 = windows_[std::size_t(wi)];
+    w2.b1 = b1;
+    ++w2.stamp;
+    ++stats_.windows_merged;
+    push(wi);
+  }
+
+  static void append_interval(std::vector<Interval>& list, const FT& lo, const FT& hi)
+  {
+    if(!(lo < hi))
+      return;
+    if(!list.empty() && list.back().hi == lo)
+      list.back().hi = hi;
+    else
+      list.push_back(Interval{lo, hi});
+  }
+
+  struct Change
+  {
+    Index window;
+    std::size_t first, count;
+  };
+
+  // ------------------------------------------------------------------------------------------------
+  // Propagation of one window across the face it looks into
+
+  Local_window<FT> local_window(const Window& w, Index h) const
+  {
+    if(h == mesh_.edge_halfedge[std::size_t(w.edge)])
+      return Local_window<FT>{w.b0, w.b1, w.sx, w.sy, w.sigma};
+    const FT L = mesh_.he_length[std::size_t(h)];
+    return Local_window<FT>{L - w.b1, L - w.b0, L - w.sx, -w.sy, w.sigma};
+  }
+
+  void propagate(Index wi)
+  {
+    const Window& w = windows_[std::size_t(wi)];
+    const Index h = w.into_halfedge;
+    const Index source = w.source;
+    const Local_window<FT> lw_in = local_window(w, h);
+    const Index prev_w = w.prev, next_w = w.next;
+    const Index edge = w.edge;
+    const bool canonical = (h == mesh_.edge_halfedge[std::size_t(edge)]);
+    const FT L = mesh_.he_length[std::size_t(h)];
+    const Point_2_ft<FT> c = mesh_.he_opposite[std::size_t(h)];
+    const Index va = mesh_.source(h), vb = mesh_.target(h), vc = mesh_.opposite_vertex(h);
+
+    // Xin-Wang filter, as trimming: the part of the window that A (along the edge), B (along the edge)
+    // or C (straight) beats is not propagated, since every point beyond it is reached better through
+    // that vertex (and a vertex a shortest path can pass through emits its own windows).
+    Local_window<FT> lw = lw_in;
+    const FT da = dist_[std::size_t(va)], db = dist_[std::size_t(vb)], dcv = dist_[std::size_t(vc)];
+    bool trimmed0 = false, trimmed1 = false;
+    if(!trim_by_vertex(lw, FT(0), FT(0), da, trimmed0, trimmed1) ||
+       !trim_by_vertex(lw, L, FT(0), db, trimmed0, trimmed1) ||
+       !trim_by_vertex(lw, c.x, c.y, dcv, trimmed0, trimmed1)) {
+      ++stats_.windows_pruned;
+      return;
+    }
+    const FT d_p0 = window_distance_at(lw.b0, lw.sx, lw.sy, lw.sigma);
+    const FT d_p1 = window_distance_at(lw.b1, lw.sx, lw.sy, lw.sigma);
+    const FT c_p0 = distance_2(c.x, c.y, lw.b0, FT(0)), c_p1 = distance_2(c.x, c.y, lw.b1, FT(0));
+
+    // Where the segment from S to C crosses the line AB (the edge AC sees crossings from 0 to xc,
+    // the edge BC from L to xc; crossings are monotone along each edge).
+    const FT denom = c.y - lw.sy;
+    const bool flat_source = !(denom > FT(0)); // S and C both on the line AB: a degenerate face
+    const FT xc = flat_source ? lw.sx : lw.sx + (c.x - lw.sx) * (-lw.sy) / denom;
+
+    // Which side lobes to emit. A lobe rooted at a window end inside the edge is only a gap filler; it is
+    // useless when the neighbouring window on the same side continues the wavefront there.
+    bool lobe0 = !trimmed0, lobe1 = !trimmed1;
+    if(trimmed0) {
+    } else if(lw.b0 == FT(0)) {
+      lobe0 = lobes_at_vertices_;
+    } else if(!lobes_at_contiguous_ends_) {
+      lobe0 = !contiguous_neighbour(canonical ? prev_w : next_w, canonical, h, lw.b0, true);
+    }
+    if(trimmed1) {
+    } else if(lw.b1 == L) {
+      lobe1 = lobes_at_vertices_;
+    } else if(!lobes_at_contiguous_ends_) {
+      lobe1 = !contiguous_neighbour(canonical ? next_w : prev_w, canonical, h, lw.b1, false);
+    }
+
+    // The value at C, from the class C falls in.
+    FT dc;
+    if(xc < lw.b0) dc = d_p0 + c_p0;
+    else if(xc > lw.b1) dc = d_p1 + c_p1;
+    else dc = lw.sigma + distance_2(lw.sx, lw.sy, c.x, c.y);
+    update_vertex(vc, dc, source);
+
+    const Propagation_data pd{lw, d_p0, d_p1, xc, flat_source, lobe0, lobe1, source, h};
+    // edge C->A (halfedge prev(h)), walked from A (u = 0) to C (u = 1)
+    emit_pieces(pd, Mesh::prev(h), FT(0), FT(0), c, FT(0), true);
+    // edge B->C (halfedge next(h)), walked from B (u = 0) to C (u = 1)
+    emit_pieces(pd, Mesh::next(h), L, FT(0), c, L, false);
+  }
+
+  // Removes from the window the end parts where the vertex at (qx, qy) with distance dq beats it (dq plus
+  // the straight segment to the window point). The beaten set is an interval (inside a branch of a
+  // hyperbola); only a prefix or a suffix is cut, an inner part is left. Returns false if nothing remains.
+  bool trim_by_vertex(Local_window<FT>& w, const FT& qx, const FT& qy, const FT& dq, bool& trimmed0, bool& trimmed1) const
+  {
+    if(!(dq < unreached_))
+      return true;
+    const bool beaten0 = dominated(dq + distance_2(qx, qy, w.b0, FT(0)), window_distance_at(w.b0, w.sx, w.sy, w.sigma));
+    const bool beaten1 = dominated(dq + distance_2(qx, qy, w.b1, FT(0)), window_distance_at(w.b1, w.sx, w.sy, w.sigma));
+    if(!beaten0 && !beaten1)
+      return true;
+    FT roots[2];
+    const int n = window_crossings(w.sx, w.sy, w.sigma, qx, qy, dq, w.b0, w.b1, roots);
+    if(beaten0 && beaten1) {
+      if(n < 2)
+        return false;            // beaten everywhere (no crossing inside, or only a tangency)
+      return true;               // beaten at both ends, not in the middle: keep it whole (rare)
+    }
+    if(n == 0)
+      return true;               // rounding: the ends disagree but no crossing was found
+    if(beaten0) {
+      w.b0 = roots[0];
+      trimmed0 = true;
+    } else {
+      w.b1 = roots[n - 1];
+      trimmed1 = true;
+    }
+    return w.b0 < w.b1;
+  }
+
+  // Is window `n` (a neighbour on the same edge) a continuation of the wavefront at the end point x?
+  bool contiguous_neighbour(Index n, bool canonical, Index h, const FT& x, bool at_start) const
+  {
+    if(n < 0)
+      return false;
+    const Window& nw = windows_[std::size_t(n)];
+    if(nw.into_halfedge != h)
+      return false;
+    const Local_window<FT> ln = local_window(nw, h);
+    (void)canonical;
+    return at_start ? ln.b1 == x : ln.b0 == x;
+  }
+
+  struct Propagation_data
+  {
+    Local_window<FT> w;
+    FT d_p0, d_p1, xc;
+    bool flat_source, lobe0, lobe1;
+    Index source, h;
+  };
+
+  // The target edge runs from P (at u = 0, on the line AB at abscissa x0) to C (u = 1). Splits it into the
+  // lobe-0, central and lobe-1 parts and inserts them into the edge's envelope.
+  void emit_pieces(const Propagation_data& pd, Index g, const FT& px, const FT& py, const Point_2_ft<FT>& c,
+                   const FT& x0, bool reversed)
+  {
+    const Local_window<FT>& w = pd.w;
+    const FT len = mesh_.he_length[std::size_t(g)];
+    const FT x1 = pd.xc;
+    // u where the crossing equals b (clamped to [0,1]); crossings run monotonically from x0 to x1.
+    auto u_at = [&](const FT& b) -> FT {
+      if(x1 > x0) {
+        if(!(b > x0)) return FT(0);
+        if(!(b < x1)) return FT(1);
+      } else {
+        if(!(b < x0)) return FT(0);
+        if(!(b > x1)) return FT(1);
+      }
+      // the line from S through (b, 0) meets P + u (C - P) at u = sy (b - px) / ((b - sx) qy + sy qx)
+      const FT qx = c.x - px, qy = c.y - py;
+      const FT den = (b - w.sx) * qy + w.sy * qx;
+      if(den == FT(0))
+        return FT(0);
+      FT u = w.sy * (b - px) / den;
+      if(u < FT(0)) u = FT(0);
+      if(u > FT(1)) u = FT(1);
+      return u;
+    };
+    // classes along u: 0 = lobe at P0, 1 = central, 2 = lobe at P1
+    FT ua, ub;      // the central part [ua, ub]
+    FT l0a, l0b;    // lobe 0 part
+    FT l1a, l1b;    // lobe 1 part
+    if(pd.flat_source || x1 == x0) {
+      const FT x = pd.flat_source ? w.sx : x0;
+      const int cls = x < w.b0 ? 0 : (x > w.b1 ? 2 : 1);
+      ua = ub = l0a = l0b = l1a = l1b = FT(0);
+      if(cls == 0) l0b = FT(1);
+      else if(cls == 1) ub = FT(1);
+      else l1b = FT(1);
+    } else {
+      const FT u0 = u_at(w.b0), u1 = u_at(w.b1);
+      if(x1 > x0) { l0a = FT(0); l0b = u0; ua = u0; ub = u1; l1a = u1; l1b = FT(1); }
+      else        { l1a = FT(0); l1b = u1; ua = u1; ub = u0; l0a = u0; l0b = FT(1); }
+    }
+    const Index tw = mesh_.he_twin[std::size_t(g)];
+    (void)tw;
+    // P is source(h) or target(h); in the frame of g the target-edge points are source(g) + t e.
+    if(ub > ua || (len == FT(0) && ub == FT(1)))
+      emit_one(pd, g, px, py, c, reversed, ua, ub, w.sx, w.sy, w.sigma);
+    if(pd.lobe0 && (l0b > l0a || (len == FT(0) && l0b == FT(1))))
+      emit_one(pd, g, px, py, c, reversed, l0a, l0b, w.b0, FT(0), pd.d_p0);
+    if(pd.lobe1 && (l1b > l1a || (len == FT(0) && l1b == FT(1))))
+      emit_one(pd, g, px, py, c, reversed, l1a, l1b, w.b1, FT(0), pd.d_p1);
+  }
+
+  // Inserts the part [ua, ub] of the target edge (P + u (C - P)) with pseudo-source (qx, qy) of the h
+  // frame and offset sigma, converting to the frame of the target halfedge g.
+  void emit_one(const Propagation_data& pd, Index g, const FT& px, const FT& py, const Point_2_ft<FT>& c,
+                bool reversed, const FT& ua, const FT& ub, const FT& qx, const FT& qy, const FT& sigma)
+  {
+    using std::sqrt;
+    const FT len = mesh_.he_length[std::size_t(g)];
+    // g runs from O to T: for the edge C->A, O = C and T = A = P; for B->C, O = B = P and T = C.
+    const FT ox = reversed ? c.x : px, oy = reversed ? c.y : py;
+    const FT tx = reversed ? px : c.x, ty = reversed ? py : c.y;
+    const FT ex = tx - ox, ey = ty - oy;
+    const FT elen = sqrt(ex * ex + ey * ey);
+    FT sx, sy;
+    if(elen > FT(0)) {
+      const FT dx = qx - ox, dy = qy - oy;
+      sx = (dx * ex + dy * ey) / elen;
+      sy = (ex * dy - ey * dx) / elen;
+    } else {
+      sx = FT(0);
+      sy = distance_2(ox, oy, qx, qy);
+    }
+    FT t0, t1;
+    if(reversed) { t0 = len * (FT(1) - ub); t1 = len * (FT(1) - ua); }
+    else         { t0 = len * ua; t1 = len * ub; }
+    if(ua == FT(0)) { if(reversed) t1 = len; else t0 = FT(0); }
+    if(ub == FT(1)) { if(reversed) t0 = FT(0); else t1 = len; }
+    (void)pd;
+    insert_piece(g, t0, t1, sx, sy, sigma, pd.source);
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Point queries and path tracing
+
+  struct Candidate
+  {
+    enum Kind { NONE, VERTEX, EDGE_POINT, FACE_SOURCE };
+    Kind kind = NONE;
+    FT value = FT(0);
+    Index source = -1;
+    Index vertex = -1;
+    Index halfedge = -1; // EDGE_POINT: the point is at abscissa t in this halfedge's frame
+    FT t = FT(0);
+    FT step = FT(0);     // length of the straight segment from the query point to the candidate point
+    Index face = -1;
+    std::array<FT, 3> barycentric;
+  };
+
+  // The places a traced path has already been: rounding in degenerate faces (zero-length edges, needles)
+  // can make two places look equally good; never going back keeps the path finite.
+  struct Visited
+  {
+    std::vector<Index> vertices;
+    std::vector<std::pair<Index, FT>> edge_points; // (edge, abscissa in the canonical frame)
+
+    void add_vertex(const std::vector<Index>& cluster) { vertices.insert(vertices.end(), cluster.begin(), cluster.end()); }
+    void add_edge_point(Index e, const FT& x) { edge_points.push_back({e, x}); }
+
+    bool allows(const Candidate& c, const Mesh& mesh) const
+    {
+      Index v = -1;
+      if(c.kind == Candidate::VERTEX)
+        v = c.vertex;
+      else if(c.kind == Candidate::EDGE_POINT) {
+        const FT len = mesh.he_length[std::size_t(c.halfedge)];
+        if(!(c.t > FT(0))) v = mesh.source(c.halfedge);
+        else if(!(c.t < len)) v = mesh.target(c.halfedge);
+        else {
+          const Index e = mesh.he_edge[std::size_t(c.halfedge)];
+          const FT x = c.halfedge == mesh.edge_halfedge[std::size_t(e)] ? c.t : len - c.t;
+          const FT tol = FT(1e-12) * len;
+          for(const auto& p : edge_points)
+            if(p.first == e && !(p.second - x > tol) && !(x - p.second > tol))
+              return false;
+          return true;
+        }
+      }
+      if(v < 0)
+        return true;
+      return std::find(vertices.begin(), vertices.end(), v) == vertices.end();
+    }
+  };
+
+  // The best way to reach the point (f, b) from the distance field: a vertex of f, a face source in f, or
+  // a window on an edge of f. `skip_vertex` / `skip_edge`: the current point of a path (no zero step).
+  Candidate best_candidate_in_face(Index f, const std::array<FT, 3>& b, Index skip_vertex, Index skip_edge,
+                                   const Visited* visited = nullptr) const
+  {
+    Candidate best;
+    auto offer = [&](const Candidate& c) {
+      if(visited != nullptr && !visited->allows(c, mesh_))
+        return;
+      if(best.kind == Candidate::NONE || c.value < best.value)
+        best = c;
+    };
+    for(int k = 0; k < 3; ++k) {
+      const Index g = 3 * f + k;
+      const Index v = mesh_.source(g);
+      if(v == skip_vertex || !(dist_[std::size_t(v)] < unreached_))
+        continue;
+      const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, k);
+      Candidate c;
+      c.kind = Candidate::VERTEX;
+      c.step = distance_2(FT(0), FT(0), p.x, p.y);
+      c.value = dist_[std::size_t(v)] + c.step;
+      c.source = vertex_source_[std::size_t(v)];
+      c.vertex = v;
+      offer(c);
+    }
+    for(const Face_source& s : face_sources_) {
+      if(s.face != f)
+        continue;
+      const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, 0);
+      const Point_2_ft<FT> q = point_in_halfedge_frame(f, s.barycentric, 0);
+      Candidate c;
+      c.kind = Candidate::FACE_SOURCE;
+      c.step = distance_2(p.x, p.y, q.x, q.y);
+      c.value = c.step;
+      c.source = s.id;
+      c.face = f;
+      c.barycentric = s.barycentric;
+      offer(c);
+    }
+    if(windows_.empty())
+      return best;
+    for(int k = 0; k < 3; ++k) {
+      const Index g = 3 * f + k;
+      const Index e = mesh_.he_edge[std::size_t(g)];
+      if(e == skip_edge)
+        continue;
+      const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, k);
+      const bool on_edge = b[std::size_t((k + 2) % 3)] == FT(0);
+      for(Index wi = edge_first_[std::size_t(e)]; wi >= 0; wi = windows_[std::size_t(wi)].next) {
+        const Window& w = windows_[std::size_t(wi)];
+        const Local_window<FT> lw = local_window(w, g);
+        if(w.into_halfedge == g) {
+          // the point sees the window from its far side: straight to S if the segment crosses it
+          FT x;
+          const FT den = p.y - lw.sy;
+          if(den > FT(0))
+            x = lw.sx + (p.x - lw.sx) * (-lw.sy) / den;
+          else
+            x = p.x;
+          if(x < lw.b0) x = lw.b0;
+          if(x > lw.b1) x = lw.b1;
+          if(!snap_to_end(g, x, skip_vertex))
+            continue;
+          Candidate c;
+          c.kind = Candidate::EDGE_POINT;
+          c.step = distance_2(x, FT(0), p.x, p.y);
+          c.value = window_distance_at(x, lw.sx, lw.sy, lw.sigma) + c.step;
+          c.source = w.source;
+          c.halfedge = g;
+          c.t = x;
+          offer(c);
+        } else if(on_edge && !(p.x < lw.b0) && !(p.x > lw.b1)) {
+          FT x = p.x;
+          if(!snap_to_end(g, x, skip_vertex))
+            continue;
+          Candidate c;
+          c.kind = Candidate::EDGE_POINT;
+          c.value = window_distance_at(x, lw.sx, lw.sy, lw.sigma);
+          c.source = w.source;
+          c.halfedge = g;
+          c.t = x;
+          offer(c);
+        }
+      }
+    }
+    return best;
+  }
+
+  // A crossing point within rounding of an end of the edge is that vertex. Returns false if that vertex is
+  // the current point of a path (the step would not move).
+  bool snap_to_end(Index g, FT& x, Index skip_vertex) const
+  {
+    const FT len = mesh_.he_length[std::size_t(g)];
+    const FT tol = FT(1e-12) * len;
+    if(!(x > tol)) {
+      x = FT(0);
+      return mesh_.source(g) != skip_vertex;
+    }
+    if(!(x < len - tol)) {
+      x = len;
+      return mesh_.target(g) != skip_vertex;
+    }
+    return true;
+  }
+
+  // The vertex and the vertices at the same place (joined to it by zero-length edges).
+  std::vector<Index> coincident_vertices(Index v) const
+  {
+    std::vector<Index> cluster(1, v);
+    for(std::size_t i = 0; i < cluster.size(); ++i) {
+      const Index u = cluster[i];
+      for(Index k = star_begin_[std::size_t(u)]; k < star_begin_[std::size_t(u) + 1]; ++k) {
+        const Index h = star_[std::size_t(k)];
+        const Index hp = Mesh::prev(h);
+        const Index candidates[2] = {mesh_.he_length[std::size_t(h)] == FT(0) ? mesh_.target(h) : Index(-1),
+                                     mesh_.he_length[std::size_t(hp)] == FT(0) ? mesh_.source(hp) : Index(-1)};
+        for(Index w : candidates)
+          if(w >= 0 && std::find(cluster.begin(), cluster.end(), w) == cluster.end())
+            cluster.push_back(w);
+      }
+    }
+    return cluster;
+  }
+
+  // The point at vertex v seen from every face around v and around the vertices at the same place.
+  std::vector<std::pair<Index, std::array<FT, 3>>> vertex_incarnations(Index v) const
+  {
+    std::vector<std::pair<Index, std::array<FT, 3>>> out;
+    for(Index u : coincident_vertices(v))
+      for(Index k = star_begin_[std::size_t(u)]; k < star_begin_[std::size_t(u) + 1]; ++k) {
+        const Index h = star_[std::size_t(k)];
+        std::array<FT, 3> b = {FT(0), FT(0), FT(0)};
+        b[std::size_t(h % 3)] = FT(1);
+        out.push_back({Mesh::face_of(h), b});
+      }
+    return out;
+  }
+
+  // Adds the point at ratio r along halfedge g, seen from the face of g's twin.
+  void add_twin_incarnation(Index g, const FT& r, std::vector<std::pair<Index, std::array<FT, 3>>>& where) const
+  {
+    const Index tw = mesh_.he_twin[std::size_t(g)];
+    if(tw < 0)
+      return;
+    std::array<FT, 3> b = {FT(0), FT(0), FT(0)};
+    b[std::size_t(tw % 3)] = r;                       // source(tw) == target(g)
+    b[std::size_t((tw % 3 + 1) % 3)] = FT(1) - r;     // target(tw) == source(g)
+    where.push_back({Mesh::face_of(tw), b});
+  }
+
+  Path_node vertex_node(Index v) const
+  {
+    Path_node n;
+    n.kind = Path_node::VERTEX;
+    n.index = v;
+    n.t = FT(0);
+    n.barycentric = {FT(0), FT(0), FT(0)};
+    n.point = mesh_.points[std::size_t(v)];
+    return n;
+  }
+
+  Path_node edge_node(Index g, const FT& r) const
+  {
+    Path_node n;
+    n.kind = Path_node::EDGE;
+    n.index = g;
+    n.t = r;
+    n.barycentric = {FT(0), FT(0), FT(0)};
+    const auto& a = mesh_.points[std::size_t(mesh_.source(g))];
+    const auto& c = mesh_.points[std::size_t(mesh_.target(g))];
+    for(int i = 0; i < 3; ++i)
+      n.point[std::size_t(i)] = (FT(1) - r) * a[std::size_t(i)] + r * c[std::size_t(i)];
+    return n;
+  }
+
+  Path_node face_node(Index f, const std::array<FT, 3>& b) const
+  {
+    Path_node n;
+    n.kind = Path_node::FACE;
+    n.index = f;
+    n.t = FT(0);
+    n.barycentric = b;
+    for(int i = 0; i < 3; ++i) {
+      n.point[std::size_t(i)] = FT(0);
+      for(int k = 0; k < 3; ++k)
+        n.point[std::size_t(i)] += b[std::size_t(k)] * mesh_.points[std::size_t(mesh_.source(3 * f + k))][std::size_t(i)];
+    }
+    return n;
+  }
+
+  // ------------------------------------------------------------------------------------------------
+
+  const Mesh& mesh_;
+  std::vector<Window> windows_;
+  std::vector<Index> free_windows_;
+  std::vector<Heap_entry> heap_;
+  std::vector<Index> edge_first_;
+  std::vector<char> edge_closed_;
+  std::size_t since_release_ = 0, release_interval_ = 1024;
+  std::vector<FT> dist_;
+  std::vector<Index> vertex_source_;
+  std::vector<char> vertex_is_pseudo_source_;
+  std::vector<std::uint32_t> vertex_stamp_, expanded_stamp_;
+  std::vector<Face_source> face_sources_;
+  mutable std::vector<Index> star_begin_, star_;
+  std::vector<Index> stop_targets_;
+  Geodesic_statistics stats_;
+  std::size_t live_windows_ = 0;
+  FT unreached_;
+  FT relative_tolerance_;
+  FT limit_ = FT(0);
+  FT front_ = FT(0);
+  bool has_limit_ = false;
+  bool keep_windows_ = true;
+  bool stopped_early_ = false;
+  bool lobes_at_vertices_ = false;
+  bool lobes_at_contiguous_ends_ = false;
+  // scratch of insert_piece_impl
+  std::vector<Interval> survive_, wins_, remain_, changes_win_;
+  std::vector<Change> changes_;
+};
+
+} // namespace internal
+} // namespace Polyhedral_geodesics_3
+} // namespace CGAL
+
+#endif // CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_EXACT_WINDOW_PROPAGATION_H

@@ -1,0 +1,133 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Windows (intervals of optimality) of the exact geodesic propagation and the few formulas that act on
+// them: the distance along the edge, its minimum, the change of frame between an edge's two sides, and
+// the split points where two distance functions cross (thesis section 4.1.4, a quadratic).
+//
+// Frames. Every compact halfedge h has a planar frame: source(h) at (0,0), target(h) at (L,0), the face
+// of h on the side y >= 0. A window is stored in the frame of its edge's canonical halfedge; the frame of
+// the twin is the mirror image x -> L - x, y -> -y.
+
+#ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_WINDOW_H
+#define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_WINDOW_H
+
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace CGAL {
+namespace Polyhedral_geodesics_3 {
+namespace internal {
+
+template <class FT>
+struct Geodesic_window
+{
+  typedef std::int32_t Index;
+
+  FT b0, b1;     // the interval [b0, b1] on the edge, 0 <= b0 <= b1 <= L
+  FT sx, sy;     // the pseudo-source in the edge frame
+  FT sigma;      // the distance from the source to the pseudo-source
+  Index edge;
+  Index next, prev;       // neighbours on the edge, sorted by b0; -1 at the ends
+  Index into_halfedge;    // the halfedge whose face the window propagates into, -1 if none
+  Index source;           // index of the source the window's paths start from
+  std::uint32_t stamp;    // incremented whenever the window changes or dies (lazy deletion in the queue)
+  bool processed;         // already propagated
+  bool alive;
+};
+
+// A window seen from a given halfedge's frame (a value type, no links).
+template <class FT>
+struct Local_window
+{
+  FT b0, b1, sx, sy, sigma;
+};
+
+template <class FT>
+inline FT window_distance_at(const FT& x, const FT& sx, const FT& sy, const FT& sigma)
+{
+  using std::sqrt;
+  const FT dx = x - sx;
+  return sigma + sqrt(dx * dx + sy * sy);
+}
+
+// The smallest distance on the window: the foot of the pseudo-source if it falls inside, else the nearer end.
+template <class FT>
+inline FT window_min_distance(const FT& b0, const FT& b1, const FT& sx, const FT& sy, const FT& sigma)
+{
+  using std::abs;
+  if(sx < b0)
+    return window_distance_at(b0, sx, sy, sigma);
+  if(sx > b1)
+    return window_distance_at(b1, sx, sy, sigma);
+  return sigma + abs(sy);
+}
+
+template <class FT>
+inline FT distance_2(const FT& ax, const FT& ay, const FT& bx, const FT& by)
+{
+  using std::sqrt;
+  const FT dx = bx - ax, dy = by - ay;
+  return sqrt(dx * dx + dy * dy);
+}
+
+// The candidate split points in (lo, hi) where sigma_w + |S_w x| = sigma_v + |S_v x| (x on the edge):
+// squaring twice gives a quadratic; spurious roots are harmless because the caller decides the winner
+// between consecutive split points by evaluating both functions. Writes at most two roots, returns the count.
+template <class FT>
+int window_crossings(const FT& aw, const FT& hw, const FT& sw, const FT& av, const FT& hv, const FT& sv,
+                     const FT& lo, const FT& hi, FT roots[2])
+{
+  using std::sqrt;
+  using std::abs;
+  const FT D = sv - sw;
+  const FT alpha = FT(2) * (av - aw);
+  const FT beta = aw * aw + hw * hw - av * av - hv * hv;
+  int n = 0;
+  auto keep = [&](const FT& r) {
+    if(lo < r && r < hi)
+      roots[n++] = r;
+  };
+  if(D == FT(0)) {
+    if(alpha != FT(0))
+      keep(-beta / alpha);
+    return n;
+  }
+  const FT D2 = D * D;
+  const FT bd = beta - D2;
+  const FT A = alpha * alpha - FT(4) * D2;
+  const FT B = FT(2) * alpha * bd + FT(8) * D2 * av;
+  const FT C = bd * bd - FT(4) * D2 * (av * av + hv * hv);
+  if(A == FT(0)) {
+    if(B != FT(0))
+      keep(-C / B);
+    return n;
+  }
+  FT disc = B * B - FT(4) * A * C;
+  if(disc < FT(0)) {
+    // A double root lost to rounding shows up as a slightly negative discriminant; its position
+    // -B/2A is still a useful split point (the midpoint tests decide), so keep it.
+    keep(-B / (FT(2) * A));
+    return n;
+  }
+  const FT sq = sqrt(disc);
+  const FT q = B >= FT(0) ? FT(-0.5) * (B + sq) : FT(-0.5) * (B - sq);
+  if(q != FT(0)) {
+    const FT r1 = q / A, r2 = C / q;
+    if(r1 <= r2) { keep(r1); keep(r2); }
+    else { keep(r2); keep(r1); }
+  } else {
+    keep(FT(0));
+  }
+  return n;
+}
+
+} // namespace internal
+} // namespace Polyhedral_geodesics_3
+} // namespace CGAL
+
+#endif // CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_WINDOW_H
