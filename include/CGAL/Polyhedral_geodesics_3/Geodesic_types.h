@@ -19,8 +19,9 @@ namespace Polyhedral_geodesics_3 {
 */
 enum class Geodesic_memory_mode
 {
-  /// Only the vertex distances (and nearest sources) survive; windows are released as soon as the
-  /// propagation no longer needs them. Point queries and shortest paths throw `std::logic_error`.
+  /// Only the vertex distances (and nearest sources) survive. The windows of an edge are released once the
+  /// front has passed it (covered end to end, all values below the front), the rest at the end.
+  /// Point queries and shortest paths throw `std::logic_error`.
   distances_only,
   /// The whole distance field (every window on every edge) is kept: distances at any surface point,
   /// nearest sources at any point, and shortest paths.
