@@ -29,13 +29,7 @@ using MDCS_test::Vec3;
 
 const double tolerance = 1e-12;
 
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup)
-{
-  Mesh m;
-  soup.to_mesh(m);
-  REQUIRE(num_faces(m) == soup.triangles.size());
-  return m;
-}
+Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
 
 std::vector<double> engine_vertex_distances(Geodesics& g, const Mesh& m)
 {

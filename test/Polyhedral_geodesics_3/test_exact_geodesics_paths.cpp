@@ -30,13 +30,7 @@ typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup)
-{
-  Mesh m;
-  soup.to_mesh(m);
-  REQUIRE(num_faces(m) == soup.triangles.size());
-  return m;
-}
+Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
 
 // One node of a path as reported to a GeodesicPathVisitor.
 struct Node

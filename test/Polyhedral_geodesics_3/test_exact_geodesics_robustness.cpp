@@ -34,14 +34,7 @@ using MDCS_test::Vec3;
 
 const double tolerance = 1e-12;
 
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup)
-{
-  Mesh m;
-  soup.to_mesh(m);
-  REQUIRE(num_faces(m) == soup.triangles.size());
-  REQUIRE(num_vertices(m) == soup.points.size());
-  return m;
-}
+Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
 
 // Vertex i of the mesh built from a soup is the i-th point (Surface_mesh keeps the order).
 vertex_descriptor vertex_at(const Mesh& /*m*/, std::size_t i)

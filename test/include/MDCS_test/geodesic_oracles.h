@@ -884,6 +884,17 @@ inline std::ostream& operator<<(std::ostream& os, const Distance_comparison& c)
   return os;
 }
 
+// The mesh of a triangle soup, checked: every triangle became a face and every point a vertex (in order).
+template <class Mesh, class Point>
+Mesh mesh_from_soup(const Triangle_soup<Point>& soup)
+{
+  Mesh m;
+  soup.to_mesh(m);
+  if(num_faces(m) != soup.triangles.size() || num_vertices(m) != soup.points.size())
+    throw std::runtime_error("mesh_from_soup: the soup is not a valid polygon mesh");
+  return m;
+}
+
 } // namespace MDCS_test
 
 #endif // MDCS_TEST_GEODESIC_ORACLES_H
