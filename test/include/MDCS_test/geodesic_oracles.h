@@ -629,7 +629,6 @@ Triangle_soup<Point_3> needle_strip(std::size_t n, double width)
 template <class Point_3>
 Triangle_soup<Point_3> grid_with_needle_column(std::size_t n, double x, double gap)
 {
-  Triangle_soup<Point_3> soup;
   std::vector<double> xs;
   for(std::size_t i = 0; i <= n; ++i)
     xs.push_back(double(i) / double(n));
@@ -637,22 +636,13 @@ Triangle_soup<Point_3> grid_with_needle_column(std::size_t n, double x, double g
   xs.push_back(x + gap);
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  // the triangulation of planar_grid, with its columns moved to the abscissae xs
   const std::size_t nx = xs.size() - 1;
+  Triangle_soup<Point_3> soup = planar_grid<Point_3>(nx, n);
   for(std::size_t j = 0; j <= n; ++j)
-    for(std::size_t i = 0; i <= nx; ++i)
-      soup.points.emplace_back(xs[i], double(j) / double(n), 0);
-  auto id = [&](std::size_t i, std::size_t j) { return j * (nx + 1) + i; };
-  for(std::size_t j = 0; j < n; ++j)
-    for(std::size_t i = 0; i < nx; ++i) {
-      const std::size_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if((i + j) % 2 == 0) {
-        soup.triangles.push_back({a, b, c});
-        soup.triangles.push_back({a, c, d});
-      }
-      else {
-        soup.triangles.push_back({a, b, d});
-        soup.triangles.push_back({b, c, d});
-      }
+    for(std::size_t i = 0; i <= nx; ++i) {
+      Point_3& p = soup.points[j * (nx + 1) + i];
+      p = Point_3(xs[i], p.y(), p.z());
     }
   return soup;
 }

@@ -896,13 +896,13 @@ private:
     } else if(lw.b0 == FT(0)) {
       lobe0 = lobes_at_vertices_;
     } else if(!lobes_at_contiguous_ends_) {
-      lobe0 = !contiguous_neighbour(canonical ? prev_w : next_w, canonical, h, lw.b0, true);
+      lobe0 = !contiguous_neighbour(canonical ? prev_w : next_w, h, lw.b0, true);
     }
     if(trimmed1) {
     } else if(lw.b1 == L) {
       lobe1 = lobes_at_vertices_;
     } else if(!lobes_at_contiguous_ends_) {
-      lobe1 = !contiguous_neighbour(canonical ? next_w : prev_w, canonical, h, lw.b1, false);
+      lobe1 = !contiguous_neighbour(canonical ? next_w : prev_w, h, lw.b1, false);
     }
 
     // The value at C, from the class C falls in.
@@ -950,7 +950,7 @@ private:
   }
 
   // Is window `n` (a neighbour on the same edge) a continuation of the wavefront at the end point x?
-  bool contiguous_neighbour(Index n, bool canonical, Index h, const FT& x, bool at_start) const
+  bool contiguous_neighbour(Index n, Index h, const FT& x, bool at_start) const
   {
     if(n < 0)
       return false;
@@ -958,7 +958,6 @@ private:
     if(nw.into_halfedge != h)
       return false;
     const Local_window<FT> ln = local_window(nw, h);
-    (void)canonical;
     return at_start ? ln.b1 == x : ln.b0 == x;
   }
 
@@ -1013,8 +1012,6 @@ private:
       if(x1 > x0) { l0a = FT(0); l0b = u0; ua = u0; ub = u1; l1a = u1; l1b = FT(1); }
       else        { l1a = FT(0); l1b = u1; ua = u1; ub = u0; l0a = u0; l0b = FT(1); }
     }
-    const Index tw = mesh_.he_twin[std::size_t(g)];
-    (void)tw;
     // P is source(h) or target(h); in the frame of g the target-edge points are source(g) + t e.
     if(ub > ua || (len == FT(0) && ub == FT(1)))
       emit_one(pd, g, px, py, c, reversed, ua, ub, w.sx, w.sy, w.sigma);
@@ -1050,7 +1047,6 @@ private:
     else         { t0 = len * ua; t1 = len * ub; }
     if(ua == FT(0)) { if(reversed) t1 = len; else t0 = FT(0); }
     if(ub == FT(1)) { if(reversed) t0 = FT(0); else t1 = len; }
-    (void)pd;
     insert_piece(g, t0, t1, sx, sy, sigma, pd.source);
   }
 
