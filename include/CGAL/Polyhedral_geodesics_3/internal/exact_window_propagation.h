@@ -20,6 +20,7 @@
 
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_window.h>
 
 #include <algorithm>
@@ -43,21 +44,8 @@ public:
   typedef Geodesic_mesh<FT> Mesh;
   typedef Geodesic_window<FT> Window;
 
-  struct Path_node
-  {
-    enum Kind { VERTEX, EDGE, FACE };
-    Kind kind;
-    Index index;                   // vertex, compact halfedge, or face
-    FT t;                          // EDGE: the point is (1-t) source + t target of the halfedge
-    std::array<FT, 3> barycentric; // FACE
-    std::array<FT, 3> point;       // the 3D point
-  };
-
-  struct Point_distance
-  {
-    FT distance;
-    Index source;
-  };
+  typedef Geodesic_path_node<FT> Path_node;
+  typedef Geodesic_point_distance<FT> Point_distance;
 
   explicit Exact_window_propagation(const Mesh& mesh) : mesh_(mesh)
   {
