@@ -41,6 +41,8 @@ struct Geodesic_statistics
   std::size_t peak_live_windows = 0;   ///< largest number of windows stored at the same time
   std::size_t stored_windows = 0;      ///< windows stored when the propagation ended
   std::size_t peak_memory_bytes = 0;   ///< bytes of window storage and queue at their peak (an estimate)
+  std::size_t vertex_updates = 0;      ///< vertex distances lowered (flat-exact, fast marching, Dijkstra)
+  std::size_t updates_rejected_by_dag = 0; ///< lowerings refused because they would close a dependence cycle
   bool stopped_early = false;          ///< the propagation stopped at the distance limit or at the stop targets
 };
 
