@@ -91,6 +91,10 @@ public:
   void set_stop_targets(const std::vector<Index>& targets) { stop_targets_ = targets; }
   // Side lobes at window ends on vertices (redundant with the vertex expansion) and at ends where the
   // neighbouring window continues the wavefront (redundant up to rounding). Both off by default.
+  // Approximation by interval merging (thesis 4.2): before a window propagates, it absorbs neighbours
+  // on its edge whose distance function it reproduces within `tolerance` (absolute). 0: exact.
+  void set_merge_tolerance(const FT& tolerance) { merge_tolerance_ = tolerance; }
+
   void set_lobe_options(bool lobes_at_vertices, bool lobes_at_contiguous_ends)
   {
     lobes_at_vertices_ = lobes_at_vertices;
@@ -184,7 +188,9 @@ public:
         stopped_early_ = true;
         break;
       }
-      w.processed = true;
+      if(merge_tolerance_ > FT(0))
+        absorb_similar_neighbours(top.window);
+      windows_[std::size_t(top.window)].processed = true;
       propagate(top.window);
       ++stats_.windows_propagated;
       if(!keep_windows_ && ++since_release_ >= release_interval_) {
@@ -815,6 +821,81 @@ private:
     push(wi);
   }
 
+  // ------------------------------------------------------------------------------------------------
+  // Interval merging (approximation, thesis 4.2)
+  //
+  // Window wi is about to propagate. A contiguous neighbour n on the same edge, looking into the same
+  // face and not yet propagated, is joined with it when one of the two distance functions, extended over
+  // the other's interval, stays within [D_other, D_other + tolerance] there; when both do, the one that
+  // deviates less is kept (so a side lobe, rooted at a window end, does not absorb the window of a real
+  // source that reproduces it: flat regions stay exact). Two rules keep the thesis's dependence DAG
+  // acyclic without storing it: only windows without children (not yet propagated) are merged, so a merge
+  // joins two leaves; and merging never lowers a value, so every value remains a path-length bound (>= the
+  // exact distance) and a window's descendants can never undercut it, which is what would close a cycle
+  // (and stall path tracing).
+  void absorb_similar_neighbours(Index wi)
+  {
+    for(int side = 0; side < 2; ++side) {
+      for(;;) {
+        const Window& w = windows_[std::size_t(wi)];
+        const Index ni = side == 0 ? w.next : w.prev;
+        if(ni < 0)
+          break;
+        const Window& n = windows_[std::size_t(ni)];
+        if(n.processed || n.into_halfedge != w.into_halfedge || (side == 0 ? n.b0 != w.b1 : n.b1 != w.b0))
+          break;
+        const FT w_over_n = merge_deviation(w, n), n_over_w = merge_deviation(n, w);
+        if(w_over_n < FT(0) && n_over_w < FT(0))
+          break;
+        const bool keep_w = !(n_over_w >= FT(0)) || (w_over_n >= FT(0) && !(n_over_w < w_over_n));
+        const Window absorbed = n;
+        kill_window(ni);
+        Window& w2 = windows_[std::size_t(wi)];
+        if(side == 0) w2.b1 = absorbed.b1;
+        else w2.b0 = absorbed.b0;
+        if(!keep_w) {
+          w2.sx = absorbed.sx;
+          w2.sy = absorbed.sy;
+          w2.sigma = absorbed.sigma;
+          w2.source = absorbed.source;
+        }
+        ++stats_.windows_merged;
+      }
+    }
+  }
+
+  // The largest excess of D_w over D_n on n's interval if D_n <= D_w <= D_n + tolerance there, else -1.
+  // The extremes of f = D_w - D_n are at the interval's ends or where f' = 0, i.e. where both pseudo-sources
+  // are seen under the same angle: |x - a_w| |h_n| = |x - a_n| |h_w|, two linear equations. So the bounds
+  // are checked exactly (up to rounding), not sampled.
+  FT merge_deviation(const Window& w, const Window& n) const
+  {
+    using std::abs;
+    FT xs[4];
+    int count = 0;
+    xs[count++] = n.b0;
+    xs[count++] = n.b1;
+    const FT hw = abs(w.sy), hn = abs(n.sy);
+    for(int sign = -1; sign <= 1; sign += 2) {
+      const FT den = hn + FT(sign) * hw;
+      if(den != FT(0)) {
+        const FT x = (w.sx * hn + FT(sign) * n.sx * hw) / den;
+        if(n.b0 < x && x < n.b1)
+          xs[count++] = x;
+      }
+    }
+    FT worst = FT(0);
+    for(int k = 0; k < count; ++k) {
+      const FT dn = window_distance_at(xs[k], n.sx, n.sy, n.sigma);
+      const FT diff = window_distance_at(xs[k], w.sx, w.sy, w.sigma) - dn;
+      if(diff + relative_tolerance_ * dn < FT(0) || diff > merge_tolerance_)
+        return FT(-1);
+      if(diff > worst)
+        worst = diff;
+    }
+    return worst;
+  }
+
   static void append_interval(std::vector<Interval>& list, const FT& lo, const FT& hi)
   {
     if(!(lo < hi))
@@ -1303,6 +1384,7 @@ private:
   FT relative_tolerance_;
   FT limit_ = FT(0);
   FT front_ = FT(0);
+  FT merge_tolerance_ = FT(0);
   bool has_limit_ = false;
   bool keep_windows_ = true;
   bool stopped_early_ = false;

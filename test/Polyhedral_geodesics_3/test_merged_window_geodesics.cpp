@@ -1,0 +1,188 @@
+// Interval merging (Merged_window_geodesic_distances_3, thesis 4.2) against the exact class: tolerance 0
+// reproduces it bit for bit; every merged distance is >= the exact one (merges only raise values); the error
+// and the number of propagated windows move monotonically with the tolerance; flat meshes stay exact; traced
+// paths end at a source with a length between the exact distance and the merged one; bad tolerances throw.
+#include <catch2/catch.hpp>
+
+#include <MDCS_test/cgal_meshes.h>
+#include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/mesh_generators.h>
+
+#include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/Merged_window_geodesic_distances_3.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+namespace PG = CGAL::Polyhedral_geodesics_3;
+typedef PG::Exact_geodesic_distances_3<Mesh> Exact;
+typedef PG::Merged_window_geodesic_distances_3<Mesh> Merged;
+using MDCS_test::Vec3;
+
+Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
+
+double mean_edge_length(const Mesh& m)
+{
+  double s = 0;
+  for(auto e : edges(m))
+    s += MDCS_test::dist(MDCS_test::vertex_vec3(m, source(halfedge(e, m), m)), MDCS_test::vertex_vec3(m, target(halfedge(e, m), m)));
+  return s / double(num_edges(m));
+}
+
+template <class G>
+std::vector<double> all_distances(G& g, const Mesh& m)
+{
+  std::vector<double> r;
+  for(vertex_descriptor v : vertices(m))
+    r.push_back(g.distance(v));
+  return r;
+}
+
+struct Test_mesh
+{
+  std::string name;
+  Mesh mesh;
+};
+
+std::vector<Test_mesh> curved_meshes()
+{
+  std::vector<Test_mesh> r;
+  r.push_back({"bumpy sphere 3", make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.2, 5))});
+  r.push_back({"terrain 24x24", make_mesh(MDCS_test::height_field_grid<Point_3>(24, 0.35, 4))});
+  r.push_back({"square with a hole", make_mesh(MDCS_test::square_with_hole<Point_3>(16, 5, 11, 6, 10))});
+  Mesh elephant;
+  if(MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh("elephant.off"), elephant))
+    r.push_back({"elephant", elephant});
+  else
+    WARN("CGAL demo mesh elephant.off not found; tested on generated meshes only");
+  return r;
+}
+
+} // namespace
+
+TEST_CASE("merged windows: tolerance 0 is the exact algorithm, bit for bit", "[geodesics][merged]")
+{
+  for(const auto& tm : curved_meshes()) {
+    INFO(tm.name);
+    const auto sources = MDCS_test::spread_vertices(tm.mesh, 2, 3);
+    Exact exact(tm.mesh);
+    Merged merged(tm.mesh, 0.0);
+    for(auto s : sources) {
+      exact.add_source(s);
+      merged.add_source(s);
+    }
+    CHECK(all_distances(merged, tm.mesh) == all_distances(exact, tm.mesh));
+    CHECK(merged.statistics().windows_propagated == exact.statistics().windows_propagated);
+  }
+}
+
+TEST_CASE("merged windows: one-sided error, monotone in the tolerance", "[geodesics][merged]")
+{
+  for(const auto& tm : curved_meshes()) {
+    const double mel = mean_edge_length(tm.mesh);
+    const vertex_descriptor s = MDCS_test::spread_vertices(tm.mesh, 1, 11)[0];
+    Exact exact(tm.mesh, PG::Geodesic_memory_mode::distances_only);
+    exact.add_source(s);
+    const std::vector<double> d = all_distances(exact, tm.mesh);
+    double previous_error = 0;
+    std::size_t last_windows = 0;
+    for(double relative : {1e-4, 1e-3, 1e-2, 1e-1, 1.0}) {
+      INFO(tm.name << ", tolerance " << relative << " x mean edge length");
+      Merged merged(tm.mesh, relative * mel, PG::Geodesic_memory_mode::distances_only);
+      merged.add_source(s);
+      const std::vector<double> a = all_distances(merged, tm.mesh);
+      double error = 0, below = 0;
+      std::size_t n = 0;
+      for(std::size_t i = 0; i < d.size(); ++i) {
+        REQUIRE(std::isfinite(a[i]) == std::isfinite(d[i]));
+        if(!(d[i] > 0) || !std::isfinite(d[i]))
+          continue;
+        error += (a[i] - d[i]) / d[i];
+        below = std::min(below, (a[i] - d[i]) / d[i]);
+        ++n;
+      }
+      error /= double(n);
+      CHECK(below >= -1e-12);                 // never below the exact distance
+      CHECK(error >= previous_error - 1e-12); // the trade-off curve is monotone
+      CHECK(error < 0.05 * relative + 1e-9);  // measured: E <= 0.024 x the relative tolerance on these meshes
+      previous_error = error;
+      last_windows = merged.statistics().windows_propagated;
+    }
+    CHECK(last_windows < exact.statistics().windows_propagated / 2);
+  }
+}
+
+TEST_CASE("merged windows: flat meshes stay exact", "[geodesics][merged][flat]")
+{
+  const Mesh m = make_mesh(MDCS_test::jittered_planar_grid<Point_3>(20, 14, 2.0, 1.4, 0.3, 7));
+  for(double relative : {1e-3, 1e-1}) {
+    const vertex_descriptor s = MDCS_test::spread_vertices(m, 1, 5)[0];
+    Merged merged(m, relative * mean_edge_length(m));
+    merged.add_source(s);
+    const Vec3 ps = MDCS_test::vertex_vec3(m, s);
+    for(vertex_descriptor v : vertices(m)) {
+      const double e = MDCS_test::dist(ps, MDCS_test::vertex_vec3(m, v));
+      CHECK(merged.distance(v) == Approx(e).epsilon(1e-12).margin(1e-12));
+    }
+  }
+}
+
+TEST_CASE("merged windows: paths end at a source, between the exact and the merged distance", "[geodesics][merged][paths]")
+{
+  for(const auto& tm : curved_meshes()) {
+    const double mel = mean_edge_length(tm.mesh), diag = MDCS_test::bbox_diagonal(tm.mesh);
+    const auto sources = MDCS_test::spread_vertices(tm.mesh, 2, 17);
+    Exact exact(tm.mesh);
+    Merged merged(tm.mesh, 0.01 * mel);
+    std::vector<Vec3> source_points;
+    for(auto s : sources) {
+      exact.add_source(s);
+      merged.add_source(s);
+      source_points.push_back(MDCS_test::vertex_vec3(tm.mesh, s));
+    }
+    std::size_t checked = 0, bad_end = 0, too_short = 0, too_long = 0;
+    double worst_excess = 0;
+    for(vertex_descriptor v : MDCS_test::spread_vertices(tm.mesh, 120, 2)) {
+      std::vector<Point_3> pts;
+      merged.shortest_path_points(v, std::back_inserter(pts));
+      if(merged.distance(v) == 0)
+        continue;
+      ++checked;
+      REQUIRE(pts.size() >= 2);
+      const Vec3 end = MDCS_test::to_vec3(pts.back());
+      bool at_source = false;
+      for(const Vec3& p : source_points)
+        at_source = at_source || MDCS_test::dist(end, p) <= 1e-9 * diag;
+      bad_end += at_source ? 0 : 1;
+      const double length = MDCS_test::path_length(pts), de = exact.distance(v), dm = merged.distance(v);
+      too_short += length < de * (1 - 1e-9) ? 1 : 0;
+      worst_excess = std::max(worst_excess, (length - dm) / dm);
+      too_long += length > dm * (1 + 1e-3) ? 1 : 0;
+    }
+    INFO(tm.name << ": " << checked << " paths, worst (length - merged distance) / distance " << worst_excess);
+    CHECK(checked > 50);
+    CHECK(bad_end == 0);
+    CHECK(too_short == 0);
+    CHECK(too_long == 0);
+  }
+}
+
+TEST_CASE("merged windows: invalid tolerances are rejected", "[geodesics][merged][robustness]")
+{
+  const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(1, 0.1, 2));
+  CHECK_THROWS_AS(Merged(m, -1.0), std::invalid_argument);
+  CHECK_THROWS_AS(Merged(m, std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+  Merged g(m, 0.1);
+  CHECK_THROWS_AS(g.set_merge_tolerance(-0.5), std::invalid_argument);
+  CHECK(g.merge_tolerance() == 0.1);
+  CHECK_THROWS_AS(g.distance(*vertices(m).begin()), std::logic_error); // no source
+}
