@@ -1,0 +1,506 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The distance field that the window propagation leaves behind (windows on every edge, vertex distances
+// and nearest sources, sources inside faces) and what is read from it: the distance and nearest source at
+// any surface point, and shortest-path tracing. Exact_window_propagation (exact_window_propagation.h)
+// derives from this class and fills the field.
+
+#ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_WINDOW_FIELD_H
+#define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_WINDOW_FIELD_H
+
+#include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/geodesic_window.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polyhedral_geodesics_3 {
+namespace internal {
+
+template <class FT>
+class Window_field
+{
+public:
+  typedef typename Geodesic_mesh<FT>::Index Index;
+  typedef Geodesic_mesh<FT> Mesh;
+  typedef Geodesic_window<FT> Window;
+  typedef Geodesic_path_node<FT> Path_node;
+  typedef Geodesic_point_distance<FT> Point_distance;
+
+  explicit Window_field(const Mesh& mesh) : mesh_(mesh)
+  {
+    // The sentinel of "no distance yet": large, but far from overflowing when a few lengths are added.
+    unreached_ = FT(std::numeric_limits<double>::max() / 16);
+    if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
+      relative_tolerance_ = FT(64) * FT(std::numeric_limits<FT>::epsilon());
+    else
+      relative_tolerance_ = FT(0);
+  }
+
+public:
+  FT vertex_distance(Index v) const
+  {
+    return dist_[std::size_t(v)] >= unreached_ ? FT(std::numeric_limits<double>::infinity()) : dist_[std::size_t(v)];
+  }
+
+  Index vertex_source(Index v) const { return vertex_source_[std::size_t(v)]; }
+
+  // Calls f(window) for every stored window of edge e, in order along the edge (tests and debugging).
+  template <class F>
+  void for_each_window_on_edge(Index e, F f) const
+  {
+    if(windows_.empty())
+      return;
+    for(Index wi = edge_first_[std::size_t(e)]; wi >= 0; wi = windows_[std::size_t(wi)].next)
+      f(windows_[std::size_t(wi)]);
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Queries (full field)
+
+  Point_distance distance_at(Index f, const std::array<FT, 3>& b) const
+  {
+    Candidate c = best_candidate_in_face(f, b, -1, -1);
+    if(c.kind == Candidate::NONE || !finite_answer(c.value))
+      return {FT(std::numeric_limits<double>::infinity()), -1};
+    return {c.value, c.source};
+  }
+
+  // Emits the path from the point (f, b) to its nearest source: the point itself, every edge crossing
+  // and vertex, the source. Emits nothing if the point is unreachable.
+  template <class Emit>
+  void trace_path(Index f, const std::array<FT, 3>& b, Emit emit) const
+  {
+    Candidate first = best_candidate_in_face(f, b, -1, -1);
+    if(first.kind == Candidate::NONE || !finite_answer(first.value))
+      return;
+    ensure_vertex_star();
+    // The current point as a list of (face, barycentric) incarnations, plus what it is.
+    std::vector<std::pair<Index, std::array<FT, 3>>> where;
+    Index at_vertex = -1, on_halfedge = -1;
+    int zeros = 0, nonzero = -1;
+    for(int k = 0; k < 3; ++k) {
+      if(b[k] == FT(0)) ++zeros;
+      else nonzero = k;
+    }
+    if(zeros >= 2) {
+      at_vertex = mesh_.source(3 * f + nonzero);
+      emit(vertex_node(at_vertex));
+      where = vertex_incarnations(at_vertex);
+    } else {
+      emit(face_node(f, b));
+      where.push_back({f, b});
+      if(zeros == 1) {
+        int k = 0;
+        while(b[(k + 2) % 3] != FT(0)) ++k;
+        on_halfedge = 3 * f + k;
+        add_twin_incarnation(on_halfedge, b[(k + 1) % 3], where);
+      }
+    }
+    FT current = first.value;
+    Visited visited;
+    if(at_vertex >= 0)
+      visited.add_vertex(coincident_vertices(at_vertex));
+    const std::size_t max_steps = 8 * mesh_.number_of_faces + 64;
+    for(std::size_t step = 0; step < max_steps; ++step) {
+      if(at_vertex >= 0 && dist_[std::size_t(at_vertex)] == FT(0))
+        return; // a source vertex
+      Candidate best;
+      for(const auto& inc : where) {
+        Candidate c = best_candidate_in_face(inc.first, inc.second, at_vertex,
+                                             on_halfedge < 0 ? -1 : mesh_.he_edge[std::size_t(on_halfedge)], &visited);
+        if(c.kind != Candidate::NONE && (best.kind == Candidate::NONE || c.value < best.value))
+          best = c;
+      }
+      if(best.kind == Candidate::NONE)
+        throw std::runtime_error("CGAL::Polyhedral_geodesics_3: shortest path tracing lost the distance field");
+      switch(best.kind) {
+      case Candidate::FACE_SOURCE:
+        emit(face_node(best.face, best.barycentric));
+        return;
+      case Candidate::VERTEX:
+        at_vertex = best.vertex;
+        on_halfedge = -1;
+        visited.add_vertex(coincident_vertices(at_vertex));
+        emit(vertex_node(at_vertex));
+        where = vertex_incarnations(at_vertex);
+        break;
+      case Candidate::EDGE_POINT: {
+        const Index g = best.halfedge;
+        const FT len = mesh_.he_length[std::size_t(g)];
+        const FT t = best.t;
+        if(!(t > FT(0))) {
+          at_vertex = mesh_.source(g);
+          on_halfedge = -1;
+          visited.add_vertex(coincident_vertices(at_vertex));
+          emit(vertex_node(at_vertex));
+          where = vertex_incarnations(at_vertex);
+        } else if(!(t < len)) {
+          at_vertex = mesh_.target(g);
+          on_halfedge = -1;
+          visited.add_vertex(coincident_vertices(at_vertex));
+          emit(vertex_node(at_vertex));
+          where = vertex_incarnations(at_vertex);
+        } else {
+          at_vertex = -1;
+          on_halfedge = g;
+          {
+            const Index e = mesh_.he_edge[std::size_t(g)];
+            visited.add_edge_point(e, g == mesh_.edge_halfedge[std::size_t(e)] ? t : len - t);
+          }
+          const FT r = t / len;
+          emit(edge_node(g, r));
+          const Index fg = Mesh::face_of(g);
+          std::array<FT, 3> bg = {FT(0), FT(0), FT(0)};
+          bg[g % 3] = FT(1) - r;
+          bg[(g % 3 + 1) % 3] = r;
+          where.clear();
+          where.push_back({fg, bg});
+          add_twin_incarnation(g, r, where);
+        }
+        break;
+      }
+      default:
+        break;
+      }
+      if(!(best.value < current + current * FT(1e-9) + FT(1e-300)))
+        throw std::runtime_error("CGAL::Polyhedral_geodesics_3: shortest path tracing did not descend");
+      current = best.value;
+    }
+    throw std::runtime_error("CGAL::Polyhedral_geodesics_3: shortest path tracing did not reach a source");
+  }
+
+protected:
+  // The window seen from halfedge h (its edge's canonical halfedge or the twin, whose frame is mirrored).
+  Local_window<FT> local_window(const Window& w, Index h) const
+  {
+    if(h == mesh_.edge_halfedge[std::size_t(w.edge)])
+      return Local_window<FT>{w.b0, w.b1, w.sx, w.sy, w.sigma};
+    const FT L = mesh_.he_length[std::size_t(h)];
+    return Local_window<FT>{L - w.b1, L - w.b0, L - w.sx, -w.sy, w.sigma};
+  }
+
+  bool finite_answer(const FT& value) const
+  {
+    if(!(value < unreached_))
+      return false;
+    if(stopped_early_) {
+      const FT bound = has_limit_ && front_ > limit_ ? limit_ : front_;
+      return value <= bound;
+    }
+    return !has_limit_ || value <= limit_;
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Sources inside faces
+
+  struct Face_source
+  {
+    Index face;
+    std::array<FT, 3> barycentric;
+    Index id;
+  };
+
+  // The point with barycentric coordinates b of face f, in the frame of the face's halfedge 3f+k.
+  Point_2_ft<FT> point_in_halfedge_frame(Index f, const std::array<FT, 3>& b, int k) const
+  {
+    const Index g = 3 * f + k;
+    const auto& o = mesh_.he_opposite[std::size_t(g)];
+    const FT len = mesh_.he_length[std::size_t(g)];
+    const FT wt = b[std::size_t((k + 1) % 3)], wo = b[std::size_t((k + 2) % 3)];
+    return Point_2_ft<FT>{wt * len + wo * o.x, wo * o.y};
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Vertex stars (for vertex sources and path tracing)
+
+  void ensure_vertex_star() const
+  {
+    if(!star_begin_.empty())
+      return;
+    const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
+    star_begin_.assign(nv + 1, 0);
+    for(std::size_t h = 0; h < nh; ++h)
+      ++star_begin_[std::size_t(mesh_.he_source[h]) + 1];
+    for(std::size_t v = 0; v < nv; ++v)
+      star_begin_[v + 1] += star_begin_[v];
+    star_.assign(nh, 0);
+    std::vector<Index> fill(star_begin_.begin(), star_begin_.end() - 1);
+    for(std::size_t h = 0; h < nh; ++h)
+      star_[std::size_t(fill[std::size_t(mesh_.he_source[h])]++)] = Index(h);
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Point queries and path tracing
+
+  struct Candidate
+  {
+    enum Kind { NONE, VERTEX, EDGE_POINT, FACE_SOURCE };
+    Kind kind = NONE;
+    FT value = FT(0);
+    Index source = -1;
+    Index vertex = -1;
+    Index halfedge = -1; // EDGE_POINT: the point is at abscissa t in this halfedge's frame
+    FT t = FT(0);
+    FT step = FT(0);     // length of the straight segment from the query point to the candidate point
+    Index face = -1;
+    std::array<FT, 3> barycentric;
+  };
+
+  // The places a traced path has already been: rounding in degenerate faces (zero-length edges, needles)
+  // can make two places look equally good; never going back keeps the path finite.
+  struct Visited
+  {
+    std::vector<Index> vertices;
+    std::vector<std::pair<Index, FT>> edge_points; // (edge, abscissa in the canonical frame)
+
+    void add_vertex(const std::vector<Index>& cluster) { vertices.insert(vertices.end(), cluster.begin(), cluster.end()); }
+    void add_edge_point(Index e, const FT& x) { edge_points.push_back({e, x}); }
+
+    bool allows(const Candidate& c, const Mesh& mesh) const
+    {
+      Index v = -1;
+      if(c.kind == Candidate::VERTEX)
+        v = c.vertex;
+      else if(c.kind == Candidate::EDGE_POINT) {
+        const FT len = mesh.he_length[std::size_t(c.halfedge)];
+        if(!(c.t > FT(0))) v = mesh.source(c.halfedge);
+        else if(!(c.t < len)) v = mesh.target(c.halfedge);
+        else {
+          const Index e = mesh.he_edge[std::size_t(c.halfedge)];
+          const FT x = c.halfedge == mesh.edge_halfedge[std::size_t(e)] ? c.t : len - c.t;
+          const FT tol = FT(1e-12) * len;
+          for(const auto& p : edge_points)
+            if(p.first == e && !(p.second - x > tol) && !(x - p.second > tol))
+              return false;
+          return true;
+        }
+      }
+      if(v < 0)
+        return true;
+      return std::find(vertices.begin(), vertices.end(), v) == vertices.end();
+    }
+  };
+
+  // The best way to reach the point (f, b) from the distance field: a vertex of f, a face source in f, or
+  // a window on an edge of f. `skip_vertex` / `skip_edge`: the current point of a path (no zero step).
+  Candidate best_candidate_in_face(Index f, const std::array<FT, 3>& b, Index skip_vertex, Index skip_edge,
+                                   const Visited* visited = nullptr) const
+  {
+    Candidate best;
+    auto offer = [&](const Candidate& c) {
+      if(visited != nullptr && !visited->allows(c, mesh_))
+        return;
+      if(best.kind == Candidate::NONE || c.value < best.value)
+        best = c;
+    };
+    for(int k = 0; k < 3; ++k) {
+      const Index g = 3 * f + k;
+      const Index v = mesh_.source(g);
+      if(v == skip_vertex || !(dist_[std::size_t(v)] < unreached_))
+        continue;
+      const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, k);
+      Candidate c;
+      c.kind = Candidate::VERTEX;
+      c.step = distance_2(FT(0), FT(0), p.x, p.y);
+      c.value = dist_[std::size_t(v)] + c.step;
+      c.source = vertex_source_[std::size_t(v)];
+      c.vertex = v;
+      offer(c);
+    }
+    for(const Face_source& s : face_sources_) {
+      if(s.face != f)
+        continue;
+      const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, 0);
+      const Point_2_ft<FT> q = point_in_halfedge_frame(f, s.barycentric, 0);
+      Candidate c;
+      c.kind = Candidate::FACE_SOURCE;
+      c.step = distance_2(p.x, p.y, q.x, q.y);
+      c.value = c.step;
+      c.source = s.id;
+      c.face = f;
+      c.barycentric = s.barycentric;
+      offer(c);
+    }
+    if(windows_.empty())
+      return best;
+    for(int k = 0; k < 3; ++k) {
+      const Index g = 3 * f + k;
+      const Index e = mesh_.he_edge[std::size_t(g)];
+      if(e == skip_edge)
+        continue;
+      const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, k);
+      const bool on_edge = b[std::size_t((k + 2) % 3)] == FT(0);
+      for(Index wi = edge_first_[std::size_t(e)]; wi >= 0; wi = windows_[std::size_t(wi)].next) {
+        const Window& w = windows_[std::size_t(wi)];
+        const Local_window<FT> lw = local_window(w, g);
+        if(w.into_halfedge == g) {
+          // the point sees the window from its far side: straight to S if the segment crosses it
+          FT x;
+          const FT den = p.y - lw.sy;
+          if(den > FT(0))
+            x = lw.sx + (p.x - lw.sx) * (-lw.sy) / den;
+          else
+            x = p.x;
+          if(x < lw.b0) x = lw.b0;
+          if(x > lw.b1) x = lw.b1;
+          if(!snap_to_end(g, x, skip_vertex))
+            continue;
+          Candidate c;
+          c.kind = Candidate::EDGE_POINT;
+          c.step = distance_2(x, FT(0), p.x, p.y);
+          c.value = window_distance_at(x, lw.sx, lw.sy, lw.sigma) + c.step;
+          c.source = w.source;
+          c.halfedge = g;
+          c.t = x;
+          offer(c);
+        } else if(on_edge && !(p.x < lw.b0) && !(p.x > lw.b1)) {
+          FT x = p.x;
+          if(!snap_to_end(g, x, skip_vertex))
+            continue;
+          Candidate c;
+          c.kind = Candidate::EDGE_POINT;
+          c.value = window_distance_at(x, lw.sx, lw.sy, lw.sigma);
+          c.source = w.source;
+          c.halfedge = g;
+          c.t = x;
+          offer(c);
+        }
+      }
+    }
+    return best;
+  }
+
+  // A crossing point within rounding of an end of the edge is that vertex. Returns false if that vertex is
+  // the current point of a path (the step would not move).
+  bool snap_to_end(Index g, FT& x, Index skip_vertex) const
+  {
+    const FT len = mesh_.he_length[std::size_t(g)];
+    const FT tol = FT(1e-12) * len;
+    if(!(x > tol)) {
+      x = FT(0);
+      return mesh_.source(g) != skip_vertex;
+    }
+    if(!(x < len - tol)) {
+      x = len;
+      return mesh_.target(g) != skip_vertex;
+    }
+    return true;
+  }
+
+  // The vertex and the vertices at the same place (joined to it by zero-length edges).
+  std::vector<Index> coincident_vertices(Index v) const
+  {
+    std::vector<Index> cluster(1, v);
+    for(std::size_t i = 0; i < cluster.size(); ++i) {
+      const Index u = cluster[i];
+      for(Index k = star_begin_[std::size_t(u)]; k < star_begin_[std::size_t(u) + 1]; ++k) {
+        const Index h = star_[std::size_t(k)];
+        const Index hp = Mesh::prev(h);
+        const Index candidates[2] = {mesh_.he_length[std::size_t(h)] == FT(0) ? mesh_.target(h) : Index(-1),
+                                     mesh_.he_length[std::size_t(hp)] == FT(0) ? mesh_.source(hp) : Index(-1)};
+        for(Index w : candidates)
+          if(w >= 0 && std::find(cluster.begin(), cluster.end(), w) == cluster.end())
+            cluster.push_back(w);
+      }
+    }
+    return cluster;
+  }
+
+  // The point at vertex v seen from every face around v and around the vertices at the same place.
+  std::vector<std::pair<Index, std::array<FT, 3>>> vertex_incarnations(Index v) const
+  {
+    std::vector<std::pair<Index, std::array<FT, 3>>> out;
+    for(Index u : coincident_vertices(v))
+      for(Index k = star_begin_[std::size_t(u)]; k < star_begin_[std::size_t(u) + 1]; ++k) {
+        const Index h = star_[std::size_t(k)];
+        std::array<FT, 3> b = {FT(0), FT(0), FT(0)};
+        b[std::size_t(h % 3)] = FT(1);
+        out.push_back({Mesh::face_of(h), b});
+      }
+    return out;
+  }
+
+  // Adds the point at ratio r along halfedge g, seen from the face of g's twin.
+  void add_twin_incarnation(Index g, const FT& r, std::vector<std::pair<Index, std::array<FT, 3>>>& where) const
+  {
+    const Index tw = mesh_.he_twin[std::size_t(g)];
+    if(tw < 0)
+      return;
+    std::array<FT, 3> b = {FT(0), FT(0), FT(0)};
+    b[std::size_t(tw % 3)] = r;                       // source(tw) == target(g)
+    b[std::size_t((tw % 3 + 1) % 3)] = FT(1) - r;     // target(tw) == source(g)
+    where.push_back({Mesh::face_of(tw), b});
+  }
+
+  Path_node vertex_node(Index v) const
+  {
+    Path_node n;
+    n.kind = Path_node::VERTEX;
+    n.index = v;
+    n.t = FT(0);
+    n.barycentric = {FT(0), FT(0), FT(0)};
+    n.point = mesh_.points[std::size_t(v)];
+    return n;
+  }
+
+  Path_node edge_node(Index g, const FT& r) const
+  {
+    Path_node n;
+    n.kind = Path_node::EDGE;
+    n.index = g;
+    n.t = r;
+    n.barycentric = {FT(0), FT(0), FT(0)};
+    const auto& a = mesh_.points[std::size_t(mesh_.source(g))];
+    const auto& c = mesh_.points[std::size_t(mesh_.target(g))];
+    for(int i = 0; i < 3; ++i)
+      n.point[std::size_t(i)] = (FT(1) - r) * a[std::size_t(i)] + r * c[std::size_t(i)];
+    return n;
+  }
+
+  Path_node face_node(Index f, const std::array<FT, 3>& b) const
+  {
+    Path_node n;
+    n.kind = Path_node::FACE;
+    n.index = f;
+    n.t = FT(0);
+    n.barycentric = b;
+    for(int i = 0; i < 3; ++i) {
+      n.point[std::size_t(i)] = FT(0);
+      for(int k = 0; k < 3; ++k)
+        n.point[std::size_t(i)] += b[std::size_t(k)] * mesh_.points[std::size_t(mesh_.source(3 * f + k))][std::size_t(i)];
+    }
+    return n;
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // ------------------------------------------------------------------------------------------------
+  // State shared with the propagation
+  const Mesh& mesh_;
+  std::vector<Window> windows_;
+  std::vector<Index> edge_first_;
+  std::vector<FT> dist_;
+  std::vector<Index> vertex_source_;
+  std::vector<Face_source> face_sources_;
+  mutable std::vector<Index> star_begin_, star_;
+  FT unreached_;
+  FT relative_tolerance_;
+  FT limit_ = FT(0);
+  FT front_ = FT(0);
+  bool has_limit_ = false;
+  bool stopped_early_ = false;
+};
+
+} // namespace internal
+} // namespace Polyhedral_geodesics_3
+} // namespace CGAL
+
+#endif // CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_WINDOW_FIELD_H
