@@ -57,6 +57,8 @@ namespace Polyhedral_geodesics_3 {
 
   Unreachable points (another connected component than every source, or farther than the distance
   limit) have distance `+infinity` and no nearest source (`std::size_t(-1)`); paths to them are empty.
+
+  \cgalModels `GeodesicDistances3` (the member functions are documented there and in the package manual).
 */
 template <class TriangleMesh, class FT_ = double,
           class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>

@@ -51,6 +51,53 @@ struct Geodesic_statistics
   \ingroup PkgPolyhedralGeodesics3Concepts
   \cgalConcept
 
+  The interface shared by every geodesic distance class of the package, exact or approximate. A model is
+  constructed on a triangle mesh (`Model(tm, mode)` or `Model(tm, vertex_point_map, mode)`), receives
+  sources, and answers queries; the propagation runs on the first query (or on `compute()`) and again only
+  after the sources or the options change.
+
+  \cgalHasModel `CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3`
+  \cgalHasModel `CGAL::Polyhedral_geodesics_3::Merged_window_geodesic_distances_3`
+  \cgalHasModel `CGAL::Polyhedral_geodesics_3::Flat_exact_geodesic_distances_3`
+  \cgalHasModel `CGAL::Polyhedral_geodesics_3::Fast_marching_geodesic_distances_3`
+  \cgalHasModel `CGAL::Polyhedral_geodesics_3::Dijkstra_geodesic_distances_3`
+*/
+class GeodesicDistances3
+{
+public:
+  /// a surface point: a face and barycentric coordinates, as `Polygon_mesh_processing::Face_location`
+  typedef unspecified_type Face_location;
+  /// returned by `nearest_source()` for unreachable points
+  static constexpr std::size_t no_source = std::size_t(-1);
+
+  /// adds a source at a vertex or at a surface point; returns its index (0, 1, ...)
+  std::size_t add_source(vertex_descriptor v);
+  std::size_t add_source(const Face_location& location);
+  void clear_sources();
+  /// stops at geodesic distance `limit`; farther points report `+infinity`
+  void set_distance_limit(FT limit);
+  /// stops once the given vertices are final; other vertices report their distance or `+infinity`
+  template <class VertexRange> void set_stop_targets(const VertexRange& targets);
+  /// runs the propagation; `progress` is a callable `bool(const char* stage, double fraction)`
+  template <class Progress> void compute(Progress progress);
+  /// distances (`+infinity` where unreachable) and nearest sources
+  FT distance(vertex_descriptor v);
+  FT distance(const Face_location& location);
+  std::pair<FT, std::size_t> nearest_source(vertex_descriptor v);
+  template <class VertexDistanceMap> void distances(VertexDistanceMap distance_map);
+  /// the path from `target` to its nearest source, as points or as a `GeodesicPathVisitor` sequence
+  template <class OutputIterator> OutputIterator shortest_path_points(vertex_descriptor target, OutputIterator out);
+  template <class Visitor> void shortest_path_sequence(vertex_descriptor target, Visitor& visitor);
+  /// counters of the last propagation
+  const Geodesic_statistics& statistics() const;
+};
+#endif
+
+#ifdef DOXYGEN_RUNNING
+/*!
+  \ingroup PkgPolyhedralGeodesics3Concepts
+  \cgalConcept
+
   Receives the points of a shortest path, from the query point to its nearest source, as mesh
   locations. Every path is a sequence of calls: first the query point, then every edge crossing and
   every vertex passed through, last the source.
