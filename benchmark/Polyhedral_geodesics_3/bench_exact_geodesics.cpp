@@ -15,22 +15,14 @@
 // memory is the child's peak resident set size minus its resident set size when the method starts (the
 // input mesh, shared with the parent, is not counted; what the method allocates, including its own copy of
 // the mesh, is). See benchmark/README.md.
+#include <geodesic_bench_common.h>
 #include <mdcs_bench.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/repair.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_shortest_path.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <csignal>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -44,29 +36,15 @@
 #include <string>
 #include <vector>
 
-#include <malloc.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#ifndef MDCS_CGAL_MESH_DIR
-#define MDCS_CGAL_MESH_DIR ""
-#endif
-
 namespace PG = CGAL::Polyhedral_geodesics_3;
 using mdcs_bench::fmt;
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
-typedef Mesh::Vertex_index Vertex;
+using namespace geodesic_bench; // Mesh, Vertex, inf, nan_, run_forked, Mesh_spec, load_mesh, ...
 typedef CGAL::Surface_mesh_shortest_path_traits<K, Mesh> SMSP_traits;
 typedef CGAL::Surface_mesh_shortest_path<SMSP_traits> SMSP;
 typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
-
-const double inf = std::numeric_limits<double>::infinity();
-const double nan_ = std::numeric_limits<double>::quiet_NaN();
 
 // ---- running one method in a forked child ------------------------------------------------------------------
 
@@ -83,151 +61,9 @@ struct Run_header
   char error[512] = {0};
 };
 
-struct Run_result
-{
-  bool ok = false;
-  std::string failure; // "crash (signal 11)", "timeout", "out of memory", an exception's message
-  Run_header header;
-  std::vector<double> distances;
-};
-
-bool write_all(int fd, const void* data, std::size_t size)
-{
-  const char* p = static_cast<const char*>(data);
-  while(size > 0) {
-    const ssize_t w = ::write(fd, p, size);
-    if(w < 0 && errno == EINTR) continue;
-    if(w <= 0) return false;
-    p += w;
-    size -= std::size_t(w);
-  }
-  return true;
-}
-
-bool read_all(int fd, void* data, std::size_t size)
-{
-  char* p = static_cast<char*>(data);
-  while(size > 0) {
-    const ssize_t r = ::read(fd, p, size);
-    if(r < 0 && errno == EINTR) continue;
-    if(r <= 0) return false;
-    p += r;
-    size -= std::size_t(r);
-  }
-  return true;
-}
-
-double status_field_mib(const char* field)
-{
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  const std::size_t len = std::strlen(field);
-  while(std::getline(in, line))
-    if(line.compare(0, len, field) == 0)
-      return std::stod(line.substr(len)) / 1024.0;
-  return 0.0;
-}
-
-double mem_available_mib()
-{
-  std::ifstream in("/proc/meminfo");
-  std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, 13, "MemAvailable:") == 0)
-      return std::stod(line.substr(13)) / 1024.0;
-  return 0.0;
-}
-
-// Runs `method(header, distances)` in a child process with a time limit and an address-space limit.
-template <class Method>
-Run_result run_forked(Method method, double timeout_s, double mem_limit_mib)
-{
-  Run_result result;
-  int fds[2];
-  if(::pipe(fds) != 0) {
-    result.failure = "pipe() failed";
-    return result;
-  }
-  std::cout.flush();
-  std::cerr.flush();
-  std::fflush(nullptr);
-  malloc_trim(0);
-  const pid_t pid = ::fork();
-  if(pid < 0) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    result.failure = "fork() failed";
-    return result;
-  }
-  if(pid == 0) { // ---- child
-    ::close(fds[0]);
-    if(mem_limit_mib > 0) {
-      const double vm = status_field_mib("VmSize:");
-      struct rlimit lim;
-      lim.rlim_cur = lim.rlim_max = rlim_t((vm + mem_limit_mib) * 1024.0 * 1024.0);
-      setrlimit(RLIMIT_AS, &lim);
-    }
-    if(timeout_s > 0) ::alarm(unsigned(std::ceil(timeout_s)));
-    Run_header header;
-    std::vector<double> distances;
-    malloc_trim(0);
-    const double baseline = mdcs_bench::current_rss_mib();
-    mdcs_bench::reset_peak_rss(); // a fork starts with peak = current RSS anyway; this makes it explicit
-    try {
-      method(header, distances);
-      header.ok = 1;
-    } catch(const std::bad_alloc&) {
-      std::snprintf(header.error, sizeof header.error, "out of memory (std::bad_alloc)");
-    } catch(const std::exception& e) {
-      std::snprintf(header.error, sizeof header.error, "exception: %s", e.what());
-    } catch(...) {
-      std::snprintf(header.error, sizeof header.error, "unknown exception");
-    }
-    header.peak_mib = std::max(0.0, mdcs_bench::peak_rss_mib() - baseline);
-    header.number_of_distances = header.ok ? distances.size() : 0;
-    bool good = write_all(fds[1], &header, sizeof header);
-    if(good && header.number_of_distances)
-      good = write_all(fds[1], distances.data(), distances.size() * sizeof(double));
-    ::close(fds[1]);
-    ::_exit(good ? 0 : 3);
-  }
-  // ---- parent
-  ::close(fds[1]);
-  bool got = read_all(fds[0], &result.header, sizeof result.header);
-  if(got && result.header.number_of_distances) {
-    result.distances.resize(std::size_t(result.header.number_of_distances));
-    got = read_all(fds[0], result.distances.data(), result.distances.size() * sizeof(double));
-  }
-  ::close(fds[0]);
-  int status = 0;
-  while(::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-  if(WIFSIGNALED(status)) {
-    const int sig = WTERMSIG(status);
-    result.failure = sig == SIGALRM ? "timeout (> " + fmt(timeout_s, "%.0f") + " s)"
-                   : sig == SIGKILL ? "killed (signal 9, out of memory?)"
-                                    : "crash (signal " + std::to_string(sig) + ", " + strsignal(sig) + ")";
-    return result;
-  }
-  if(!got) {
-    result.failure = "child exited with status " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
-                     " without a result";
-    return result;
-  }
-  if(!result.header.ok) {
-    result.failure = result.header.error;
-    return result;
-  }
-  result.ok = true;
-  return result;
-}
+typedef Forked_result<Run_header> Run_result;
 
 // ---- the methods -------------------------------------------------------------------------------------------
-
-struct Distance_vector_map // writable vertex property map into a std::vector<double>
-{
-  std::vector<double>* values;
-  friend void put(const Distance_vector_map& m, Vertex v, double d) { (*m.values)[std::size_t(v)] = d; }
-};
 
 enum Method_kind { MDCS_DISTANCES, MDCS_FULL, CGAL_SMSP };
 const char* method_name(Method_kind m)
@@ -410,88 +246,6 @@ bool load_smsp_cache(const std::string& file, std::size_t n, std::size_t k, std:
   return true;
 }
 
-// ---- meshes ------------------------------------------------------------------------------------------------
-
-struct Mesh_spec
-{
-  std::string name;
-  std::string file;      // path of the file to read
-  int loop_steps = 0;    // Loop subdivision steps applied after reading
-};
-
-bool load_mesh(const Mesh_spec& spec, Mesh& mesh, std::string& message)
-{
-  mesh.clear();
-  if(!std::filesystem::exists(spec.file)) {
-    message = "file not found: " + spec.file;
-    return false;
-  }
-  if(!CGAL::IO::read_polygon_mesh(spec.file, mesh) || mesh.is_empty()) {
-    message = "cannot read " + spec.file + " as a polygon mesh";
-    return false;
-  }
-  std::ostringstream notes;
-  if(!CGAL::is_triangle_mesh(mesh)) {
-    CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
-    notes << "triangulated; ";
-  }
-  const std::size_t isolated = CGAL::Polygon_mesh_processing::remove_isolated_vertices(mesh);
-  if(isolated) notes << "removed " << isolated << " isolated vertices; ";
-  if(spec.loop_steps > 0)
-    CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(spec.loop_steps));
-  if(mesh.has_garbage()) mesh.collect_garbage();
-  const std::size_t boundary = std::count_if(halfedges(mesh).begin(), halfedges(mesh).end(),
-                                             [&](Mesh::Halfedge_index h) { return is_border(h, mesh); });
-  auto fcc = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:bench_cc", 0).first;
-  const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(mesh, fcc);
-  mesh.remove_property_map(fcc);
-  if(boundary) notes << boundary << " boundary edges; ";
-  if(components != 1) notes << components << " components; ";
-  message = notes.str();
-  if(message.size() >= 2) message.resize(message.size() - 2);
-  return true;
-}
-
-double average_edge_length(const Mesh& mesh)
-{
-  double sum = 0;
-  std::size_t n = 0;
-  for(auto e : edges(mesh)) {
-    sum += std::sqrt(CGAL::squared_distance(mesh.point(source(halfedge(e, mesh), mesh)),
-                                            mesh.point(target(halfedge(e, mesh), mesh))));
-    ++n;
-  }
-  return n ? sum / double(n) : 1.0;
-}
-
-std::vector<std::string> split(const std::string& s, char sep)
-{
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(s);
-  while(std::getline(in, item, sep))
-    if(!item.empty()) out.push_back(item);
-  return out;
-}
-
-// Least-squares slope of log(y) against log(x), over the points with finite positive x and y.
-double loglog_slope(const std::vector<std::pair<double, double>>& points, std::size_t& used)
-{
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  used = 0;
-  std::set<double> xs;
-  for(const auto& p : points) {
-    if(!(p.first > 0 && p.second > 0 && std::isfinite(p.first) && std::isfinite(p.second))) continue;
-    const double x = std::log(p.first), y = std::log(p.second);
-    sx += x; sy += y; sxx += x * x; sxy += x * y;
-    ++used;
-    xs.insert(p.first);
-  }
-  if(xs.size() < 2) return nan_;
-  const double n = double(used);
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 struct Row_data // one (mesh, sources, method) cell of the table
 {
   std::string mesh;
@@ -524,38 +278,29 @@ void usage()
 
 int main(int argc, char** argv)
 {
-  std::string mesh_dir = MDCS_CGAL_MESH_DIR;
-  std::string extra_dir;
-  std::string csv = "exact_geodesics.csv";
-  std::vector<std::string> selected;
-  int runs = 3;
+  Common_options o;
+  o.csv = "exact_geodesics.csv";
   std::string sources_option = "both";
   std::string smsp_cache;
   bool smsp = true;
   std::size_t smsp_max_vertices = 200000;
-  double timeout_s = 1800;
-  double mem_limit_mib = 0; // 0: 60% of the available memory
-  bool list_only = false;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
-    if(a == "--meshes" && has_value) selected = split(argv[++i], ',');
-    else if(a == "--runs" && has_value) runs = std::max(1, std::atoi(argv[++i]));
-    else if(a == "--sources" && has_value) sources_option = argv[++i];
+    if(o.parse(argc, argv, i)) continue;
+    if(a == "--sources" && has_value) sources_option = argv[++i];
     else if(a == "--no-smsp") smsp = false;
     else if(a == "--smsp-max-vertices" && has_value) smsp_max_vertices = std::strtoul(argv[++i], nullptr, 10);
-    else if(a == "--mesh-dir" && has_value) mesh_dir = argv[++i];
-    else if(a == "--extra-dir" && has_value) extra_dir = argv[++i];
-    else if(a == "--timeout" && has_value) timeout_s = std::atof(argv[++i]);
-    else if(a == "--mem-limit-mib" && has_value) mem_limit_mib = std::atof(argv[++i]);
-    else if(a == "--csv" && has_value) csv = argv[++i];
     else if(a == "--smsp-cache" && has_value) smsp_cache = argv[++i];
-    else if(a == "--list") list_only = true;
     else {
       usage();
       return 2;
     }
   }
+  const std::string& mesh_dir = o.mesh_dir;
+  const std::string& csv = o.csv;
+  const int runs = o.runs;
+  const double timeout_s = o.timeout_s;
   std::vector<std::size_t> source_counts;
   if(sources_option == "1") source_counts = {1};
   else if(sources_option == "10") source_counts = {10};
@@ -566,62 +311,22 @@ int main(int argc, char** argv)
   }
 
   // ---- the list of meshes
-  std::vector<Mesh_spec> specs;
-  auto in_dir = [&](const std::string& f) { return (std::filesystem::path(mesh_dir) / f).string(); };
   const std::vector<Mesh_spec> builtin = {
-    {"ChineseDragon-10kv", in_dir("ChineseDragon-10kv.off"), 0}, {"armadillo", in_dir("armadillo.off"), 0},
-    {"bunny00", in_dir("bunny00.off"), 0},                      {"refined_elephant", in_dir("refined_elephant.off"), 0},
-    {"armadillo-loop1", in_dir("armadillo.off"), 1},            {"bunny00-loop1", in_dir("bunny00.off"), 1},
-    {"bunny00-loop2", in_dir("bunny00.off"), 2}};
-  std::set<std::string> builtin_names;
-  for(const auto& s : builtin) builtin_names.insert(s.name);
-  std::vector<Mesh_spec> extras;
-  if(!extra_dir.empty()) {
-    std::error_code ec;
-    std::vector<std::filesystem::path> files;
-    for(const auto& entry : std::filesystem::directory_iterator(extra_dir, ec))
-      if(entry.is_regular_file()) {
-        std::string ext = entry.path().extension().string();
-        std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-        if(ext == ".off" || ext == ".obj" || ext == ".ply") files.push_back(entry.path());
-      }
-    if(ec) std::cerr << "warning: cannot list --extra-dir " << extra_dir << ": " << ec.message() << "\n";
-    std::sort(files.begin(), files.end());
-    for(const auto& f : files) {
-      const std::string stem = f.stem().string();
-      if(builtin_names.count(stem)) {
-        std::cout << "note: extra mesh " << f.string() << " has the name of a built-in mesh; it is skipped\n";
-        continue;
-      }
-      extras.push_back({stem, f.string(), 0});
-    }
+    {"ChineseDragon-10kv", o.in_mesh_dir("ChineseDragon-10kv.off"), 0}, {"armadillo", o.in_mesh_dir("armadillo.off"), 0},
+    {"bunny00", o.in_mesh_dir("bunny00.off"), 0},                      {"refined_elephant", o.in_mesh_dir("refined_elephant.off"), 0},
+    {"armadillo-loop1", o.in_mesh_dir("armadillo.off"), 1},            {"bunny00-loop1", o.in_mesh_dir("bunny00.off"), 1},
+    {"bunny00-loop2", o.in_mesh_dir("bunny00.off"), 2}};
+  std::vector<Mesh_spec> specs;
+  if(!select_meshes(builtin, o, specs)) {
+    usage();
+    return 2;
   }
-  std::set<std::string> known;
-  for(const auto& s : builtin) known.insert(s.name);
-  for(const auto& s : extras) known.insert(s.name);
-  if(selected.empty()) {
-    specs = builtin;
-    specs.insert(specs.end(), extras.begin(), extras.end());
-  } else {
-    for(const auto& name : selected) {
-      if(!known.count(name)) {
-        std::cerr << "unknown mesh '" << name << "'\n";
-        usage();
-        return 2;
-      }
-      for(const auto& s : builtin) if(s.name == name) specs.push_back(s);
-      for(const auto& s : extras) if(s.name == name) specs.push_back(s);
-    }
-  }
-  if(list_only) {
-    for(const auto& s : specs)
-      std::cout << s.name << "  " << s.file << (s.loop_steps ? "  + Loop x" + std::to_string(s.loop_steps) : "") << "\n";
+  if(o.list_only) {
+    print_mesh_list(specs);
     return 0;
   }
 
-  // The allowance of one child. Well below the available memory: the machines are shared, and a method that
-  // runs out of it fails alone (std::bad_alloc, reported in the table) instead of waking the OOM killer.
-  const double mem_total_budget = mem_limit_mib > 0 ? mem_limit_mib : 0.6 * mem_available_mib();
+  const double mem_total_budget = o.memory_allowance_mib();
   std::cout << "Exact geodesic distances from 1 and 10 source vertices to all vertices.\n"
             << "MDCS = CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3<Surface_mesh, double>;"
                " SMSP = CGAL::Surface_mesh_shortest_path (Epick).\n"
@@ -679,7 +384,7 @@ int main(int argc, char** argv)
           // After a failure (crash, timeout) of a method, do not repeat it.
           if(!results[m].empty() && !results[m].back().ok) continue;
           const double started = mdcs_bench::now_seconds();
-          Run_result res = run_forked(
+          Run_result res = run_forked<Run_header>(
             [&](Run_header& h, std::vector<double>& d) {
               if(m == CGAL_SMSP) run_smsp(mesh, sources, h, d);
               else run_mdcs(mesh, sources, m == MDCS_FULL ? PG::Geodesic_memory_mode::full_field
@@ -817,13 +522,7 @@ int main(int argc, char** argv)
   }
   std::cout << "\n";
   table.print();
-  if(!csv.empty()) {
-    const std::filesystem::path parent = std::filesystem::path(csv).parent_path();
-    std::error_code ec;
-    if(!parent.empty()) std::filesystem::create_directories(parent, ec);
-    if(table.write_csv(csv)) std::cout << "\nCSV: " << csv << "\n";
-    else std::cout << "\ncannot write CSV " << csv << "\n";
-  }
+  write_table_csv(table, csv);
 
   // ---- growth exponents
   std::cout << "\nGrowth exponents (least-squares slope of log(y) vs log(vertices), over the meshes where the method ran):\n";

@@ -1,12 +1,21 @@
-// `mdcs geodesics`: exact geodesic distances and shortest paths on a triangle mesh (Polyhedral_geodesics_3),
-// drawn as a shaded picture with iso-distance lines and written as a PLY file with the distance of every vertex.
+// `mdcs geodesics`: geodesic distances and shortest paths on a triangle mesh (Polyhedral_geodesics_3: exact, or an
+// approximate method of the package, or CGAL's heat method; --compare-exact measures the error), drawn as a shaded
+// picture with iso-distance lines (geodesic_render.h) and written as a PLY file with the distance of every vertex.
 #ifndef MDCS_CLI_CMD_GEODESICS_H
 #define MDCS_CLI_CMD_GEODESICS_H
 
 #include "cli_common.h"
 #include "cmd_mincut.h" // Input_error
+#include "geodesic_render.h"
 
 #include <CGAL/Polyhedral_geodesics_3.h>
+#include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/Fast_marching_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/Flat_exact_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/Merged_window_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/geodesic_distance_error.h>
+
+#include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -38,14 +47,18 @@ namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Geo_kernel;
 typedef Geo_kernel::Point_3 Geo_point;
 typedef CGAL::Surface_mesh<Geo_point> Geo_mesh;
-typedef std::array<double, 3> Geo_vec;
+
+namespace geo_detail {
+inline Geo_vec vec(const Geo_point& p) { return {{p.x(), p.y(), p.z()}}; }
+} // namespace geo_detail
 
 inline const char* geodesics_usage()
 {
   return
     "usage: mdcs geodesics MESH --source SPEC [options]\n"
-    "Exact geodesic distances on a triangle mesh from one or more sources (interval propagation,\n"
-    "CGAL::Polyhedral_geodesics_3), shortest paths to targets, a picture and a PLY file with every distance.\n"
+    "Geodesic distances on a triangle mesh from one or more sources (CGAL::Polyhedral_geodesics_3: exact interval\n"
+    "propagation by default, or an approximate method), shortest paths to targets, a picture and a PLY file with\n"
+    "every distance.\n"
     "  MESH               OFF, PLY, OBJ or STL file, or @torus / @icosphere (generated meshes). Files that are not\n"
     "                     a valid polygon mesh are repaired (CGAL's soup repair), faces with more than three\n"
     "                     corners are triangulated; both with a note on stderr. Indices refer to the mesh as used,\n"
@@ -53,6 +66,14 @@ inline const char* geodesics_usage()
     "  --source SPEC      comma-separated sources: vertex indices (0,17) and/or surface points f:FACE:B0:B1:B2\n"
     "                     (weights of the face's corners in the order distances.ply lists them; >= 0, normalised)\n"
     "  --targets SPEC     shortest paths to these points, same syntax (default: the farthest reachable vertex)\n"
+    "  --method M         exact (default): interval (window) propagation, Exact_geodesic_distances_3\n"
+    "                     flat-exact: one interval per edge (thesis ch. 4.3), Flat_exact_geodesic_distances_3\n"
+    "                     merged:EPS: windows merged when their distances differ by at most EPS times the mean\n"
+    "                       edge length (thesis ch. 4.2; merged:0 is exact), Merged_window_geodesic_distances_3\n"
+    "                     fmm: fast marching (Kimmel-Sethian), Fast_marching_geodesic_distances_3\n"
+    "                     dijkstra: shortest paths along mesh edges, Dijkstra_geodesic_distances_3\n"
+    "                     heat, heat-idt: CGAL::Heat_method_3 (direct / intrinsic Delaunay); vertex sources only,\n"
+    "                       no paths, no --limit or --stop-at-targets\n"
     "  --limit D          stop the propagation at geodesic distance D (farther vertices: unreachable)\n"
     "  --stop-at-targets  stop as soon as the target distances are final (other vertices may stay unreachable)\n"
     "  --memory MODE      full (default): the whole distance field, needed for paths | distances: vertex\n"
@@ -60,14 +81,82 @@ inline const char* geodesics_usage()
     "  --view X,Y,Z       direction from the mesh towards the viewer (default 1,1,1; orthographic projection)\n"
     "  --up X,Y,Z         direction drawn upwards (default 0,1,0)\n"
     "  --levels N         about N iso-distance lines at round values (default 20; 0: none)\n"
+    "  --compare-exact    also run the exact method (same sources and limits); report its time and the error of\n"
+    "                     --method: mean relative error (thesis eq. 4.4.1), max relative and absolute error\n"
     "  --compare-cgal     also run CGAL::Surface_mesh_shortest_path; report the largest difference and both times\n"
     "  --output DIR       output folder (default mdcs-output): distances.ply, geodesics.svg (.png with\n"
     "                     rsvg-convert), summary.txt\n"
     "  --quiet            no progress bar\n"
     "distances.ply is ASCII: per vertex x y z, 'float distance' (-1 for unreachable vertices, which no viewer\n"
     "mistakes for a distance) and the colour of the picture's map (grey: unreachable).\n"
-    "A malformed or out-of-range --source/--targets is a command-line error (exit 2); a mesh that cannot be\n"
-    "read, has no face or cannot be triangulated is bad input (exit 3).\n";
+    "A malformed or out-of-range --source/--targets, an unknown --method or a surface-point source with the heat\n"
+    "method is a command-line error (exit 2); a mesh that cannot be read, has no face or cannot be triangulated is\n"
+    "bad input (exit 3).\n";
+}
+
+// The distance method of `--method`.
+enum class Geo_method_kind { exact, flat_exact, merged, fmm, dijkstra, heat, heat_idt };
+
+struct Geo_method
+{
+  Geo_method_kind kind = Geo_method_kind::exact;
+  double merge_eps = 0; // merged: the tolerance in units of the mean edge length
+  std::string text = "exact";
+
+  bool is_heat() const { return kind == Geo_method_kind::heat || kind == Geo_method_kind::heat_idt; }
+  bool is_exact() const { return kind == Geo_method_kind::exact; }
+  bool has_windows() const { return kind == Geo_method_kind::exact || kind == Geo_method_kind::merged; }
+  // A short description, e.g. for the picture's title: "<description> on MESH".
+  std::string description() const
+  {
+    switch(kind) {
+    case Geo_method_kind::exact: return "exact geodesic distances";
+    case Geo_method_kind::flat_exact: return "flat-exact geodesic distances";
+    case Geo_method_kind::merged: return "merged-window geodesic distances (tolerance " + geo_detail::number_text(merge_eps, 3) + " x mean edge)";
+    case Geo_method_kind::fmm: return "fast marching geodesic distances";
+    case Geo_method_kind::dijkstra: return "Dijkstra distances along edges";
+    case Geo_method_kind::heat: return "heat method distances (CGAL, direct)";
+    case Geo_method_kind::heat_idt: return "heat method distances (CGAL, intrinsic Delaunay)";
+    }
+    return text;
+  }
+  // The class that computes it.
+  std::string class_name() const
+  {
+    switch(kind) {
+    case Geo_method_kind::exact: return "CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3";
+    case Geo_method_kind::flat_exact: return "CGAL::Polyhedral_geodesics_3::Flat_exact_geodesic_distances_3";
+    case Geo_method_kind::merged: return "CGAL::Polyhedral_geodesics_3::Merged_window_geodesic_distances_3";
+    case Geo_method_kind::fmm: return "CGAL::Polyhedral_geodesics_3::Fast_marching_geodesic_distances_3";
+    case Geo_method_kind::dijkstra: return "CGAL::Polyhedral_geodesics_3::Dijkstra_geodesic_distances_3";
+    case Geo_method_kind::heat: return "CGAL::Heat_method_3::Surface_mesh_geodesic_distances_3<Direct>";
+    case Geo_method_kind::heat_idt: return "CGAL::Heat_method_3::Surface_mesh_geodesic_distances_3<Intrinsic_Delaunay>";
+    }
+    return text;
+  }
+};
+
+inline Geo_method parse_geo_method(const std::string& text)
+{
+  Geo_method m;
+  m.text = text;
+  if(text == "exact") m.kind = Geo_method_kind::exact;
+  else if(text == "flat-exact") m.kind = Geo_method_kind::flat_exact;
+  else if(text == "fmm") m.kind = Geo_method_kind::fmm;
+  else if(text == "dijkstra") m.kind = Geo_method_kind::dijkstra;
+  else if(text == "heat") m.kind = Geo_method_kind::heat;
+  else if(text == "heat-idt") m.kind = Geo_method_kind::heat_idt;
+  else if(text.compare(0, 7, "merged:") == 0) {
+    m.kind = Geo_method_kind::merged;
+    const std::string eps = text.substr(7);
+    char* end = nullptr;
+    m.merge_eps = std::strtod(eps.c_str(), &end);
+    if(eps.empty() || *end != '\0' || !std::isfinite(m.merge_eps) || m.merge_eps < 0)
+      throw Usage_error("--method merged:EPS needs a finite number EPS >= 0 (the tolerance in mean edge lengths; got '" + eps + "')");
+  } else {
+    throw Usage_error("--method must be exact, flat-exact, merged:EPS, fmm, dijkstra, heat or heat-idt (got '" + text + "')");
+  }
+  return m;
 }
 
 // A source or target: a vertex, or a point of a face given by the weights of its corners in listing order.
@@ -88,6 +177,8 @@ struct Geodesics_settings
   bool full_field = true;
   Geo_vec view = {{1, 1, 1}}, up = {{0, 1, 0}};
   long levels = 20;
+  Geo_method method;
+  bool compare_exact = false;
   bool compare_cgal = false;
   std::string output = "mdcs-output";
   bool quiet = false;
@@ -103,6 +194,7 @@ struct Geodesic_target_report
   bool automatic = false;      // the farthest vertex, chosen because no target was given
   std::string path_error;      // why the path tracing failed (empty when it did not)
   double cgal_distance = NAN;  // Surface_mesh_shortest_path's distance (with --compare-cgal)
+  double exact_distance = NAN; // the exact method's distance at a vertex target (with --compare-exact)
 };
 
 struct Geodesics_run
@@ -122,80 +214,36 @@ struct Geodesics_run
   bool compared = false;
   double cgal_seconds = 0, max_relative_difference = 0, max_absolute_difference = 0;
   std::size_t compared_vertices = 0, reachability_mismatches = 0;
+  // the exact method on the same input (with --compare-exact)
+  bool exact_compared = false;
+  double exact_seconds = 0;
+  PG::Geodesic_distance_error error;
+  double mean_edge_length = 0, merge_tolerance = 0; // merged:EPS: EPS x the mean edge length
   std::string ply, svg, png, summary_file, summary;
+
+  // Counts the reachable vertices and finds the farthest one, from `distance`.
+  void find_farthest()
+  {
+    for(std::size_t i = 0; i < V; ++i)
+      if(std::isfinite(distance[i])) {
+        ++reachable;
+        if(distance[i] > max_distance || reachable == 1) max_distance = std::max(max_distance, distance[i]), farthest = i;
+      }
+  }
+
+  // The targets of the paths: those given, else the farthest vertex (if any is reachable at a positive distance).
+  std::vector<Geo_location> wanted_targets(const std::vector<Geo_location>& given) const
+  {
+    std::vector<Geo_location> wanted = given;
+    if(wanted.empty() && reachable > 0 && max_distance > 0) {
+      Geo_location far;
+      far.index = farthest;
+      far.text = std::to_string(farthest);
+      wanted.push_back(far);
+    }
+    return wanted;
+  }
 };
-
-// ------------------------------------------------------------------------------------------------------------
-// Small vector helpers (doubles).
-namespace geo_detail {
-
-inline Geo_vec sub(const Geo_vec& a, const Geo_vec& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
-inline double dot(const Geo_vec& a, const Geo_vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Geo_vec cross(const Geo_vec& a, const Geo_vec& b)
-{
-  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-}
-inline Geo_vec normalized(const Geo_vec& a)
-{
-  const double l = std::sqrt(dot(a, a));
-  return l > 0 ? Geo_vec{{a[0] / l, a[1] / l, a[2] / l}} : a;
-}
-inline Geo_vec vec(const Geo_point& p) { return {{p.x(), p.y(), p.z()}}; }
-
-// The colour map of distances in [0, 1]: "turbo" (Mikhailov, 2019, polynomial fit), lightened by 18% towards
-// white so that the dark iso-lines stay readable at both ends.
-inline std::array<double, 3> colour_map(double t)
-{
-  t = std::min(1.0, std::max(0.0, t));
-  const double r = 0.13572138 + t * (4.61539260 + t * (-42.66032258 + t * (132.13108234 + t * (-152.94239396 + t * 59.28637943))));
-  const double g = 0.09140261 + t * (2.19418839 + t * (4.84296658 + t * (-14.18503333 + t * (4.27729857 + t * 2.82956604))));
-  const double b = 0.10667330 + t * (12.64194608 + t * (-60.58204836 + t * (110.36276771 + t * (-89.90310912 + t * 27.34824973))));
-  std::array<double, 3> c = {{r, g, b}};
-  for(double& x : c) x = 0.82 * std::min(1.0, std::max(0.0, x)) + 0.18;
-  return c;
-}
-
-inline const std::array<double, 3>& unreachable_colour()
-{
-  static const std::array<double, 3> grey = {{0.74, 0.74, 0.74}};
-  return grey;
-}
-
-inline std::string hex_colour(const std::array<double, 3>& c, double shade = 1.0)
-{
-  char buf[8];
-  auto byte = [&](double x) { return int(std::lround(255.0 * std::min(1.0, std::max(0.0, x * shade)))); };
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(c[0]), byte(c[1]), byte(c[2]));
-  return buf;
-}
-
-// A round spacing (1, 2, 2.5 or 5 times a power of ten) for about `levels` lines below `range`.
-inline double nice_spacing(double range, long levels)
-{
-  if(!(range > 0) || levels <= 0) return 0;
-  const double raw = range / double(levels);
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  double best = p;
-  for(double m : {1.0, 2.0, 2.5, 5.0, 10.0})
-    if(std::abs(std::log(m * p / raw)) < std::abs(std::log(best / raw))) best = m * p;
-  return best;
-}
-
-inline std::string number_text(double x, int digits = 4)
-{
-  std::ostringstream s;
-  s << std::setprecision(digits) << x;
-  return s.str();
-}
-
-inline std::string xml_escape(const std::string& s)
-{
-  std::string r;
-  for(char c : s) r += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-  return r;
-}
-
-} // namespace geo_detail
 
 // ------------------------------------------------------------------------------------------------------------
 // Generated meshes (for a machine without CGAL's data, and for `@torus` / `@icosphere`).
@@ -418,330 +466,6 @@ inline std::string describe_location(const Geo_location& loc)
 }
 
 // ------------------------------------------------------------------------------------------------------------
-// The picture: orthographic view, faces coloured by distance and shaded by their normal, painted back to front
-// (hidden faces found with a software depth buffer are left out), iso-distance lines per face, the sources, and
-// the shortest paths (dashed where hidden).
-
-struct Geodesic_picture
-{
-  std::vector<Geo_vec> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  std::vector<double> distance; // per point; +inf when unreachable
-  double max_distance = 0;      // the top of the colour map
-  std::vector<Geo_vec> sources;
-  std::vector<std::vector<Geo_vec>> paths; // one polyline per target
-  std::vector<Geo_vec> targets;
-  Geo_vec view = {{1, 1, 1}}, up = {{0, 1, 0}};
-  long levels = 20;
-  std::string title;
-  std::vector<std::string> caption_lines;
-  // results of the writer
-  double iso_spacing = 0;
-  std::size_t drawn_faces = 0;
-};
-
-inline void write_geodesic_svg(const std::string& file, Geodesic_picture& pic)
-{
-  using namespace geo_detail;
-  const double inf = std::numeric_limits<double>::infinity();
-  // Camera frame.
-  const Geo_vec d = normalized(pic.view);
-  Geo_vec up = normalized(pic.up);
-  if(!(std::abs(dot(up, d)) < 0.99)) up = std::abs(d[1]) < 0.9 ? Geo_vec{{0, 1, 0}} : Geo_vec{{0, 0, 1}};
-  const Geo_vec right = normalized(cross(up, d));
-  const Geo_vec screen_up = cross(d, right);
-  const Geo_vec light = normalized({{0.8 * d[0] + 0.45 * screen_up[0] - 0.3 * right[0], 0.8 * d[1] + 0.45 * screen_up[1] - 0.3 * right[1],
-                                     0.8 * d[2] + 0.45 * screen_up[2] - 0.3 * right[2]}});
-
-  // Projection of the vertices used by faces.
-  const std::size_t n = pic.points.size();
-  std::vector<double> X(n), Y(n), Z(n);
-  double xmin = inf, xmax = -inf, ymin = inf, ymax = -inf, zmin = inf, zmax = -inf;
-  for(std::size_t i = 0; i < n; ++i) {
-    X[i] = dot(pic.points[i], right);
-    Y[i] = dot(pic.points[i], screen_up);
-    Z[i] = dot(pic.points[i], d);
-  }
-  for(const auto& t : pic.triangles)
-    for(std::size_t i : t) {
-      xmin = std::min(xmin, X[i]), xmax = std::max(xmax, X[i]);
-      ymin = std::min(ymin, Y[i]), ymax = std::max(ymax, Y[i]);
-      zmin = std::min(zmin, Z[i]), zmax = std::max(zmax, Z[i]);
-    }
-  if(pic.triangles.empty()) xmin = ymin = zmin = 0, xmax = ymax = zmax = 1;
-  const double diag = std::max(1e-300, std::sqrt((xmax - xmin) * (xmax - xmin) + (ymax - ymin) * (ymax - ymin) + (zmax - zmin) * (zmax - zmin)));
-  const double pad = 0.03 * std::max(xmax - xmin, ymax - ymin) + 1e-12 * diag;
-  xmin -= pad, xmax += pad, ymin -= pad, ymax += pad;
-
-  // Layout (pixels).
-  const double W = 1000, margin = 20, top = 48, max_plot_w = W - 2 * margin, max_plot_h = 760;
-  const double scale = std::min(max_plot_w / (xmax - xmin), max_plot_h / (ymax - ymin));
-  const double plot_w = (xmax - xmin) * scale, plot_h = (ymax - ymin) * scale;
-  const double left = (W - plot_w) / 2;
-  auto sx = [&](double x) { return left + (x - xmin) * scale; };
-  auto sy = [&](double y) { return top + (ymax - y) * scale; };
-
-  // Depth buffer, one sample per pixel, and the face owning each pixel.
-  const int bw = std::max(1, int(std::ceil(plot_w))), bh = std::max(1, int(std::ceil(plot_h)));
-  std::vector<double> zbuf(std::size_t(bw) * std::size_t(bh), -inf);
-  std::vector<std::int64_t> owner(zbuf.size(), -1);
-  for(std::size_t f = 0; f < pic.triangles.size(); ++f) {
-    const auto& t = pic.triangles[f];
-    const double x0 = sx(X[t[0]]) - left, y0 = sy(Y[t[0]]) - top, x1 = sx(X[t[1]]) - left, y1 = sy(Y[t[1]]) - top,
-                 x2 = sx(X[t[2]]) - left, y2 = sy(Y[t[2]]) - top;
-    const double area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-    if(!(std::abs(area) > 1e-12)) continue;
-    const int i0 = std::max(0, int(std::floor(std::min({x0, x1, x2})))), i1 = std::min(bw - 1, int(std::ceil(std::max({x0, x1, x2}))));
-    const int j0 = std::max(0, int(std::floor(std::min({y0, y1, y2})))), j1 = std::min(bh - 1, int(std::ceil(std::max({y0, y1, y2}))));
-    for(int j = j0; j <= j1; ++j)
-      for(int i = i0; i <= i1; ++i) {
-        const double px = i + 0.5, py = j + 0.5;
-        const double a = ((x1 - px) * (y2 - py) - (x2 - px) * (y1 - py)) / area;
-        const double b = ((x2 - px) * (y0 - py) - (x0 - px) * (y2 - py)) / area;
-        const double c = 1 - a - b;
-        if(a < 0 || b < 0 || c < 0) continue;
-        const double z = a * Z[t[0]] + b * Z[t[1]] + c * Z[t[2]];
-        const std::size_t k = std::size_t(j) * std::size_t(bw) + std::size_t(i);
-        if(z > zbuf[k]) zbuf[k] = z, owner[k] = std::int64_t(f);
-      }
-  }
-  const double depth_tolerance = 3.0 / scale + 1e-6 * diag;
-  // Whether a point (projected x, y, depth z) is in front of the surface around its pixel.
-  auto visible = [&](double x, double y, double z) {
-    const int i = int(std::floor(sx(x) - left)), j = int(std::floor(sy(y) - top));
-    double back = inf;
-    for(int dj = -1; dj <= 1; ++dj)
-      for(int di = -1; di <= 1; ++di) {
-        const int a = i + di, b = j + dj;
-        if(a < 0 || b < 0 || a >= bw || b >= bh) return true;
-        const double zb = zbuf[std::size_t(b) * std::size_t(bw) + std::size_t(a)];
-        if(zb == -inf) return true; // next to the silhouette
-        back = std::min(back, zb);
-      }
-    return z >= back - depth_tolerance;
-  };
-
-  // The faces to draw: those owning a pixel, and tiny ones whose centre is not hidden; back to front.
-  std::vector<char> keep(pic.triangles.size(), 0);
-  for(std::int64_t f : owner)
-    if(f >= 0) keep[std::size_t(f)] = 1;
-  std::vector<std::pair<double, std::size_t>> order;
-  for(std::size_t f = 0; f < pic.triangles.size(); ++f) {
-    const auto& t = pic.triangles[f];
-    const double cz = (Z[t[0]] + Z[t[1]] + Z[t[2]]) / 3;
-    if(!keep[f] && !visible((X[t[0]] + X[t[1]] + X[t[2]]) / 3, (Y[t[0]] + Y[t[1]] + Y[t[2]]) / 3, cz)) continue;
-    order.emplace_back(cz, f);
-  }
-  std::sort(order.begin(), order.end());
-  pic.drawn_faces = order.size();
-  const bool seams = order.size() <= 60000; // a stroke in the face colour hides the anti-aliasing seams
-
-  const double maxd = pic.max_distance;
-  const double spacing = maxd > 0 ? nice_spacing(maxd, pic.levels) : 0;
-  pic.iso_spacing = spacing;
-
-  std::ofstream out(file);
-  if(!out) throw std::runtime_error("cannot write '" + file + "'");
-  const double legend_top = top + plot_h + 16;
-  const double H = legend_top + 58 + 19 * double(pic.caption_lines.size()) + 8;
-  char buf[256];
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  std::snprintf(buf, sizeof buf, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n", W, H, W, H);
-  out << buf;
-  out << "<style>.i{fill:none;stroke:#111;stroke-width:0.7;stroke-opacity:0.65}"
-         ".j{fill:none;stroke:#000;stroke-width:1.3;stroke-opacity:0.8}"
-         ".h{fill:none;stroke:#fff;stroke-width:6;stroke-linejoin:round;stroke-linecap:round;stroke-opacity:0.9}"
-         ".p{fill:none;stroke:#c2007a;stroke-width:3;stroke-linejoin:round;stroke-linecap:round}"
-         ".q{fill:none;stroke:#c2007a;stroke-width:2;stroke-dasharray:6,4;stroke-opacity:0.9}"
-         "text{font-family:Helvetica,Arial,sans-serif;fill:#222}</style>\n";
-  out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  out << "<text x=\"" << W / 2 << "\" y=\"30\" font-size=\"18\" text-anchor=\"middle\">" << xml_escape(pic.title) << "</text>\n";
-
-  // Faces and iso-lines, interleaved back to front so that nearer faces hide farther lines.
-  out << "<g stroke-width=\"0.7\" stroke-linejoin=\"round\">\n";
-  for(const auto& entry : order) {
-    const auto& t = pic.triangles[entry.second];
-    const Geo_vec& p0 = pic.points[t[0]];
-    Geo_vec normal = normalized(cross(sub(pic.points[t[1]], p0), sub(pic.points[t[2]], p0)));
-    if(dot(normal, d) < 0) normal = {{-normal[0], -normal[1], -normal[2]}}; // two-sided lighting
-    const double shade = 0.62 + 0.38 * std::max(0.0, dot(normal, light));
-    const double d0 = pic.distance[t[0]], d1 = pic.distance[t[1]], d2 = pic.distance[t[2]];
-    const bool reached = std::isfinite(d0) && std::isfinite(d1) && std::isfinite(d2) && maxd > 0;
-    const std::string colour = hex_colour(reached ? colour_map((d0 + d1 + d2) / (3 * maxd)) : unreachable_colour(), shade);
-    std::snprintf(buf, sizeof buf, "<path d=\"M%.1f %.1fL%.1f %.1fL%.1f %.1fZ\" fill=\"%s\"", sx(X[t[0]]), sy(Y[t[0]]), sx(X[t[1]]),
-                  sy(Y[t[1]]), sx(X[t[2]]), sy(Y[t[2]]), colour.c_str());
-    out << buf;
-    if(seams) out << " stroke=\"" << colour << "\"";
-    out << "/>\n";
-    if(!reached || !(spacing > 0)) continue;
-    // Iso-lines: a segment per level crossing the face, by linear interpolation of the vertex distances.
-    const double lo = std::min({d0, d1, d2}), hi = std::max({d0, d1, d2});
-    std::string minor, major;
-    for(long k = std::max(1L, long(std::ceil(lo / spacing))); double(k) * spacing <= hi; ++k) {
-      const double level = double(k) * spacing;
-      double ex[2], ey[2];
-      int found = 0;
-      for(int e = 0; e < 3 && found < 2; ++e) {
-        const std::size_t a = t[std::size_t(e)], b = t[std::size_t((e + 1) % 3)];
-        const double da = pic.distance[a], db = pic.distance[b];
-        if((da >= level) == (db >= level)) continue;
-        const double s = (level - da) / (db - da);
-        ex[found] = sx(X[a] + s * (X[b] - X[a]));
-        ey[found] = sy(Y[a] + s * (Y[b] - Y[a]));
-        ++found;
-      }
-      if(found != 2) continue;
-      std::snprintf(buf, sizeof buf, "M%.1f %.1fL%.1f %.1f", ex[0], ey[0], ex[1], ey[1]);
-      (k % 5 == 0 ? major : minor) += buf;
-    }
-    if(!minor.empty()) out << "<path class=\"i\" d=\"" << minor << "\"/>\n";
-    if(!major.empty()) out << "<path class=\"j\" d=\"" << major << "\"/>\n";
-  }
-  out << "</g>\n";
-
-  // Shortest paths: solid where visible, dashed where hidden behind the surface.
-  auto polyline = [&](const std::vector<std::pair<double, double>>& pts, const char* cls) {
-    if(pts.size() < 2) return;
-    out << "<polyline class=\"" << cls << "\" points=\"";
-    for(const auto& q : pts) {
-      std::snprintf(buf, sizeof buf, "%.1f,%.1f ", q.first, q.second);
-      out << buf;
-    }
-    out << "\"/>\n";
-  };
-  std::vector<std::vector<std::pair<double, double>>> shown, hidden;
-  for(const auto& path : pic.paths) {
-    std::vector<std::pair<double, double>> run;
-    bool run_visible = true;
-    auto flush = [&] {
-      if(run.size() >= 2) (run_visible ? shown : hidden).push_back(run);
-      run.clear();
-    };
-    for(std::size_t i = 0; i + 1 < path.size(); ++i) {
-      const Geo_vec& a = path[i];
-      const Geo_vec& b = path[i + 1];
-      const double ax = dot(a, right), ay = dot(a, screen_up), az = dot(a, d);
-      const double bx = dot(b, right), by = dot(b, screen_up), bz = dot(b, d);
-      const int pieces = std::max(1, int(std::ceil(std::hypot(bx - ax, by - ay) * scale / 2.0)));
-      for(int k = 0; k < pieces; ++k) {
-        const double s0 = double(k) / pieces, s1 = double(k + 1) / pieces, sm = (s0 + s1) / 2;
-        const bool v = visible(ax + sm * (bx - ax), ay + sm * (by - ay), az + sm * (bz - az));
-        const std::pair<double, double> q0(sx(ax + s0 * (bx - ax)), sy(ay + s0 * (by - ay)));
-        const std::pair<double, double> q1(sx(ax + s1 * (bx - ax)), sy(ay + s1 * (by - ay)));
-        if(run.empty() || v != run_visible) {
-          flush();
-          run_visible = v;
-          run.push_back(q0);
-        }
-        run.push_back(q1);
-      }
-    }
-    flush();
-  }
-  out << "<g id=\"paths\">\n";
-  for(const auto& r : hidden) polyline(r, "q");
-  for(const auto& r : shown) polyline(r, "h");
-  for(const auto& r : shown) polyline(r, "p");
-  out << "</g>\n";
-
-  // Targets and sources (hollow where hidden).
-  out << "<g id=\"markers\" font-size=\"13\">\n";
-  for(std::size_t i = 0; i < pic.targets.size(); ++i) {
-    const Geo_vec& p = pic.targets[i];
-    const double x = sx(dot(p, right)), y = sy(dot(p, screen_up));
-    const bool v = visible(dot(p, right), dot(p, screen_up), dot(p, d));
-    std::snprintf(buf, sizeof buf, "<rect x=\"%.1f\" y=\"%.1f\" width=\"9\" height=\"9\" transform=\"rotate(45 %.1f %.1f)\" fill=\"%s\" stroke=\"#000\" stroke-width=\"1.2\"/>\n",
-                  x - 4.5, y - 4.5, x, y, v ? "#c2007a" : "none");
-    out << buf;
-    std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">T%zu</text>\n", x + 8, y - 6, i + 1);
-    out << buf;
-  }
-  for(std::size_t i = 0; i < pic.sources.size(); ++i) {
-    const Geo_vec& p = pic.sources[i];
-    const double x = sx(dot(p, right)), y = sy(dot(p, screen_up));
-    const bool v = visible(dot(p, right), dot(p, screen_up), dot(p, d));
-    std::snprintf(buf, sizeof buf, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"6.5\" fill=\"%s\" stroke=\"#000\" stroke-width=\"2\"%s/>\n", x, y,
-                  v ? "#fff" : "none", v ? "" : " stroke-dasharray=\"3,2\"");
-    out << buf;
-    std::snprintf(buf, sizeof buf, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"2.5\" fill=\"#000\"/>\n", x, y);
-    out << buf;
-    if(pic.sources.size() > 1) {
-      std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">S%zu</text>\n", x + 9, y + 15, i);
-      out << buf;
-    }
-  }
-  out << "</g>\n";
-
-  // Legend: the colour bar with the major iso values, the unreachable grey, the path and source symbols.
-  const double bar_x = margin + 10, bar_w = 360, bar_y = legend_top + 16;
-  out << "<defs><linearGradient id=\"cmap\">";
-  for(int k = 0; k <= 16; ++k) out << "<stop offset=\"" << k / 16.0 << "\" stop-color=\"" << hex_colour(colour_map(k / 16.0)) << "\"/>";
-  out << "</linearGradient></defs>\n";
-  out << "<g font-size=\"12\">\n";
-  std::snprintf(buf, sizeof buf, "<text x=\"%.1f\" y=\"%.1f\">geodesic distance%s</text>\n", bar_x, legend_top + 10,
-                spacing > 0 ? (", iso-lines every " + number_text(spacing) + " (bold every " + number_text(5 * spacing) + ")").c_str() : "");
-  out << buf;
-  std::snprintf(buf, sizeof buf, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"12\" fill=\"url(#cmap)\" stroke=\"#555\" stroke-width=\"0.6\"/>\n", bar_x, bar_y, bar_w);
-  out << buf;
-  if(maxd > 0) {
-    std::vector<double> ticks = {0};
-    if(spacing > 0)
-      for(long k = 5; double(k) * spacing <= maxd * (1 + 1e-9); k += 5) ticks.push_back(double(k) * spacing);
-    if(ticks.size() < 3) ticks.push_back(maxd);
-    for(double v : ticks) {
-      const double x = bar_x + bar_w * v / maxd;
-      std::snprintf(buf, sizeof buf, "<path d=\"M%.1f %.1fv5\" stroke=\"#333\"/><text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\" font-size=\"11\">%s</text>\n",
-                    x, bar_y + 12, x, bar_y + 28, number_text(v).c_str());
-      out << buf;
-    }
-  }
-  const double lx = bar_x + bar_w + 30;
-  std::snprintf(buf, sizeof buf, "<rect x=\"%.1f\" y=\"%.1f\" width=\"18\" height=\"12\" fill=\"%s\" stroke=\"#555\" stroke-width=\"0.6\"/>"
-                "<text x=\"%.1f\" y=\"%.1f\">unreachable</text>\n", lx, bar_y, hex_colour(unreachable_colour()).c_str(), lx + 24, bar_y + 10);
-  out << buf;
-  std::snprintf(buf, sizeof buf, "<path class=\"p\" d=\"M%.1f %.1fh24\"/><path class=\"q\" d=\"M%.1f %.1fh24\"/>"
-                "<text x=\"%.1f\" y=\"%.1f\">shortest path (dashed: hidden)</text>\n", lx + 115, bar_y + 3, lx + 115, bar_y + 11, lx + 145, bar_y + 10);
-  out << buf;
-  std::snprintf(buf, sizeof buf, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"6\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"2\"/><circle cx=\"%.1f\" cy=\"%.1f\" r=\"2.3\"/>"
-                "<text x=\"%.1f\" y=\"%.1f\">source</text>\n", lx + 345, bar_y + 6, lx + 345, bar_y + 6, lx + 357, bar_y + 10);
-  out << buf;
-  out << "</g>\n";
-  for(std::size_t i = 0; i < pic.caption_lines.size(); ++i)
-    out << "<text x=\"" << bar_x << "\" y=\"" << legend_top + 62 + 19 * double(i) << "\" font-size=\"13\">" << xml_escape(pic.caption_lines[i]) << "</text>\n";
-  out << "</svg>\n";
-  if(!out) throw std::runtime_error("cannot write '" + file + "'");
-}
-
-// ASCII PLY with the distance of every vertex (-1: unreachable) and its colour in the picture's map.
-inline void write_distance_ply(const std::string& file, const Geo_mesh& m, const std::vector<double>& distance, double max_distance)
-{
-  std::ofstream out(file);
-  if(!out) throw std::runtime_error("cannot write '" + file + "'");
-  out << "ply\nformat ascii 1.0\n"
-      << "comment mdcs geodesics: exact geodesic distance to the nearest source; distance -1 = unreachable\n"
-      << "element vertex " << m.number_of_vertices() << "\n"
-      << "property float x\nproperty float y\nproperty float z\nproperty float distance\n"
-      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-      << "element face " << m.number_of_faces() << "\n"
-      << "property list uchar int vertex_indices\nend_header\n";
-  char buf[160];
-  for(Geo_mesh::Vertex_index v : m.vertices()) {
-    const Geo_point& p = m.point(v);
-    const double dv = distance[v.idx()];
-    const bool reached = std::isfinite(dv);
-    const auto c = reached && max_distance > 0 ? geo_detail::colour_map(dv / max_distance) : geo_detail::unreachable_colour();
-    std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g %.9g %d %d %d\n", p.x(), p.y(), p.z(), reached ? dv : -1.0,
-                  int(std::lround(255 * c[0])), int(std::lround(255 * c[1])), int(std::lround(255 * c[2])));
-    out << buf;
-  }
-  for(Geo_mesh::Face_index f : m.faces()) {
-    const auto c = face_corners(m, f);
-    out << "3 " << c[0].idx() << " " << c[1].idx() << " " << c[2].idx() << "\n";
-  }
-  if(!out) throw std::runtime_error("cannot write '" + file + "'");
-}
-
-// ------------------------------------------------------------------------------------------------------------
 
 inline Geodesics_settings parse_geodesics_settings(const Options& o)
 {
@@ -772,6 +496,9 @@ inline Geodesics_settings parse_geodesics_settings(const Options& o)
   s.view = vector3("view", s.view);
   s.up = vector3("up", s.up);
   s.levels = o.integer("levels", s.levels, 0);
+  s.method = parse_geo_method(o.text("method", "exact"));
+  s.compare_exact = o.has("compare-exact");
+  o.text("compare-exact", "");
   s.compare_cgal = o.has("compare-cgal");
   o.text("compare-cgal", "");
   s.output = o.text("output", s.output);
@@ -780,36 +507,22 @@ inline Geodesics_settings parse_geodesics_settings(const Options& o)
   return s;
 }
 
-// Runs everything on a mesh that is already loaded (the demo loads it to choose its sources).
-inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& mesh_name, const std::vector<std::string>& notes,
-                                      double seconds_read, const Geodesics_settings& s, Progress_bar& progress)
+// The distances of one method of the package (every class shares the facade's interface): sources, limits,
+// propagation, vertex distances, and the distances and shortest paths of the targets, written into `run`.
+template <class Geodesics, class Make>
+void run_geodesic_class(Make make, const Geo_mesh& mesh, const Geodesics_settings& s, const std::vector<Geo_location>& targets,
+                        Geodesics_run& run, Progress_bar& progress)
 {
-  typedef PG::Exact_geodesic_distances_3<Geo_mesh> Geodesics;
   const double inf = std::numeric_limits<double>::infinity();
-  Geodesics_run run;
-  run.mesh_name = mesh_name;
-  run.notes = notes;
-  run.seconds_read = seconds_read;
-  run.V = mesh.number_of_vertices();
-  run.F = mesh.number_of_faces();
-  for(Geo_mesh::Vertex_index v : mesh.vertices()) run.isolated += mesh.is_isolated(v) ? 1 : 0;
-
-  if(s.sources.empty()) throw Usage_error("--source is required (vertex indices such as 0,17 or face points f:FACE:B0:B1:B2)");
-  run.sources = parse_geo_locations(s.sources, "source");
-  validate_geo_locations(mesh, run.sources, "source");
-  const std::vector<Geo_location> targets = parse_geo_locations(s.targets, "targets");
-  validate_geo_locations(mesh, targets, "targets");
-  if(s.stop_at_targets && targets.empty()) throw Usage_error("--stop-at-targets needs --targets");
-
   auto vertex = [](std::size_t i) { return Geo_mesh::Vertex_index(Geo_mesh::size_type(i)); };
   auto face_location = [](const Geo_location& loc) {
     const auto w = face_location_weights(loc);
-    return Geodesics::Face_location(Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)), {{w[0], w[1], w[2]}});
+    return typename Geodesics::Face_location(Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)), {{w[0], w[1], w[2]}});
   };
 
   // The propagation.
   const auto t_setup = std::chrono::steady_clock::now();
-  Geodesics geodesics(mesh, s.full_field ? PG::Geodesic_memory_mode::full_field : PG::Geodesic_memory_mode::distances_only);
+  Geodesics geodesics = make(s.full_field ? PG::Geodesic_memory_mode::full_field : PG::Geodesic_memory_mode::distances_only);
   for(const Geo_location& loc : run.sources) {
     if(loc.at_vertex) geodesics.add_source(vertex(loc.index));
     else geodesics.add_source(face_location(loc));
@@ -832,26 +545,13 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
   std::vector<double> field(run.V, inf);
   geodesics.distances(boost::make_iterator_property_map(field.begin(), get(boost::vertex_index, mesh)));
   run.distance = field;
-  for(std::size_t i = 0; i < run.V; ++i)
-    if(std::isfinite(field[i])) {
-      ++run.reachable;
-      if(field[i] > run.max_distance || run.reachable == 1) run.max_distance = std::max(run.max_distance, field[i]), run.farthest = i;
-    }
+  run.find_farthest();
 
   // Targets: distances and shortest paths.
-  std::vector<Geo_location> wanted = targets;
-  bool automatic = false;
-  if(wanted.empty() && run.reachable > 0 && run.max_distance > 0) {
-    Geo_location far;
-    far.index = run.farthest;
-    far.text = std::to_string(run.farthest);
-    wanted.push_back(far);
-    automatic = true;
-  }
-  for(const Geo_location& loc : wanted) {
+  for(const Geo_location& loc : run.wanted_targets(targets)) {
     Geodesic_target_report r;
     r.where = loc;
-    r.automatic = automatic;
+    r.automatic = targets.empty();
     if(loc.at_vertex) r.distance = run.distance[loc.index];
     else r.distance = s.full_field ? double(geodesics.distance(face_location(loc))) : NAN;
     if(s.full_field) {
@@ -872,6 +572,142 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
     }
     run.targets.push_back(r);
   }
+}
+
+// CGAL's heat method: vertex distances only (sources at vertices; no paths, no limits). The precomputation
+// (matrices and their factorisations, and the intrinsic Delaunay triangulation for heat-idt) is the setup time.
+template <class Mode>
+void run_heat_method(const Geo_mesh& mesh, const std::vector<Geo_location>& targets, Geodesics_run& run, Progress_bar& progress)
+{
+  typedef CGAL::Heat_method_3::Surface_mesh_geodesic_distances_3<Geo_mesh, Mode> Heat;
+  progress("heat method", 0.0);
+  const auto t_setup = std::chrono::steady_clock::now();
+  Heat heat(mesh);
+  for(const Geo_location& loc : run.sources) heat.add_source(Geo_mesh::Vertex_index(Geo_mesh::size_type(loc.index)));
+  run.seconds_setup = seconds_since(t_setup);
+  const auto t_compute = std::chrono::steady_clock::now();
+  std::vector<double> field(run.V, std::numeric_limits<double>::infinity());
+  heat.estimate_geodesic_distances(boost::make_iterator_property_map(field.begin(), get(boost::vertex_index, mesh)));
+  run.seconds_compute = seconds_since(t_compute);
+  progress("heat method", 1.0);
+  run.distance = field;
+  run.find_farthest();
+  for(const Geo_location& loc : run.wanted_targets(targets)) {
+    Geodesic_target_report r;
+    r.where = loc;
+    r.automatic = targets.empty();
+    r.distance = loc.at_vertex ? run.distance[loc.index] : NAN; // no distances inside faces
+    run.targets.push_back(r);
+  }
+}
+
+// Runs everything on a mesh that is already loaded (the demo loads it to choose its sources). With
+// --compare-exact, `exact_reference` (when given: a run of the exact method on the same mesh and settings)
+// saves the second propagation.
+inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& mesh_name, const std::vector<std::string>& notes,
+                                      double seconds_read, const Geodesics_settings& s, Progress_bar& progress,
+                                      const Geodesics_run* exact_reference = nullptr)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  const Geo_method& method = s.method;
+  Geodesics_run run;
+  run.mesh_name = mesh_name;
+  run.notes = notes;
+  run.seconds_read = seconds_read;
+  run.V = mesh.number_of_vertices();
+  run.F = mesh.number_of_faces();
+  for(Geo_mesh::Vertex_index v : mesh.vertices()) run.isolated += mesh.is_isolated(v) ? 1 : 0;
+
+  if(s.sources.empty()) throw Usage_error("--source is required (vertex indices such as 0,17 or face points f:FACE:B0:B1:B2)");
+  run.sources = parse_geo_locations(s.sources, "source");
+  validate_geo_locations(mesh, run.sources, "source");
+  const std::vector<Geo_location> targets = parse_geo_locations(s.targets, "targets");
+  validate_geo_locations(mesh, targets, "targets");
+  if(s.stop_at_targets && targets.empty()) throw Usage_error("--stop-at-targets needs --targets");
+  if(method.is_heat()) {
+    for(const Geo_location& loc : run.sources)
+      if(!loc.at_vertex)
+        throw Usage_error("--method " + method.text + ": the heat method takes vertex sources only ('" + loc.text + "' is a surface point)");
+    if(s.limit >= 0) throw Usage_error("--method " + method.text + ": the heat method has no --limit");
+    if(s.stop_at_targets) throw Usage_error("--method " + method.text + ": the heat method has no --stop-at-targets");
+    if(run.isolated)
+      throw Input_error("the heat method needs a mesh without isolated vertices (" + std::to_string(run.isolated) + " found)");
+  }
+
+  for(Geo_mesh::Edge_index e : mesh.edges()) run.mean_edge_length += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1))));
+  if(mesh.number_of_edges() > 0) run.mean_edge_length /= double(mesh.number_of_edges());
+  run.merge_tolerance = method.merge_eps * run.mean_edge_length;
+
+  // The distances.
+  typedef PG::Geodesic_memory_mode Mode;
+  switch(method.kind) {
+  case Geo_method_kind::exact:
+    run_geodesic_class<PG::Exact_geodesic_distances_3<Geo_mesh>>(
+      [&](Mode mode) { return PG::Exact_geodesic_distances_3<Geo_mesh>(mesh, mode); }, mesh, s, targets, run, progress);
+    break;
+  case Geo_method_kind::merged:
+    run_geodesic_class<PG::Merged_window_geodesic_distances_3<Geo_mesh>>(
+      [&](Mode mode) { return PG::Merged_window_geodesic_distances_3<Geo_mesh>(mesh, run.merge_tolerance, mode); }, mesh, s, targets, run,
+      progress);
+    break;
+  case Geo_method_kind::flat_exact:
+    run_geodesic_class<PG::Flat_exact_geodesic_distances_3<Geo_mesh>>(
+      [&](Mode mode) { return PG::Flat_exact_geodesic_distances_3<Geo_mesh>(mesh, mode); }, mesh, s, targets, run, progress);
+    break;
+  case Geo_method_kind::fmm:
+    run_geodesic_class<PG::Fast_marching_geodesic_distances_3<Geo_mesh>>(
+      [&](Mode mode) { return PG::Fast_marching_geodesic_distances_3<Geo_mesh>(mesh, mode); }, mesh, s, targets, run, progress);
+    break;
+  case Geo_method_kind::dijkstra:
+    run_geodesic_class<PG::Dijkstra_geodesic_distances_3<Geo_mesh>>(
+      [&](Mode mode) { return PG::Dijkstra_geodesic_distances_3<Geo_mesh>(mesh, mode); }, mesh, s, targets, run, progress);
+    break;
+  case Geo_method_kind::heat:
+    run_heat_method<CGAL::Heat_method_3::Direct>(mesh, targets, run, progress);
+    break;
+  case Geo_method_kind::heat_idt:
+    run_heat_method<CGAL::Heat_method_3::Intrinsic_Delaunay>(mesh, targets, run, progress);
+    break;
+  }
+
+  // The exact method on the same sources and limits, for the error of this one.
+  if(s.compare_exact) {
+    std::vector<double> exact;
+    if(method.is_exact()) {
+      exact = run.distance;
+      run.exact_seconds = run.seconds_setup + run.seconds_compute;
+    } else if(exact_reference) {
+      exact = exact_reference->distance;
+      run.exact_seconds = exact_reference->seconds_setup + exact_reference->seconds_compute;
+    } else {
+      const auto t_exact = std::chrono::steady_clock::now();
+      PG::Exact_geodesic_distances_3<Geo_mesh> geodesics(mesh, PG::Geodesic_memory_mode::distances_only);
+      for(const Geo_location& loc : run.sources) {
+        const auto w = face_location_weights(loc);
+        if(loc.at_vertex) geodesics.add_source(Geo_mesh::Vertex_index(Geo_mesh::size_type(loc.index)));
+        else geodesics.add_source(PG::Exact_geodesic_distances_3<Geo_mesh>::Face_location(Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)), {{w[0], w[1], w[2]}}));
+      }
+      if(s.limit >= 0) geodesics.set_distance_limit(s.limit);
+      if(s.stop_at_targets) {
+        std::vector<Geo_mesh::Vertex_index> stop;
+        for(const Geo_location& loc : targets) {
+          if(loc.at_vertex) stop.push_back(Geo_mesh::Vertex_index(Geo_mesh::size_type(loc.index)));
+          else for(auto c : face_corners(mesh, Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)))) stop.push_back(c);
+        }
+        geodesics.set_stop_targets(stop);
+      }
+      geodesics.compute([&](const char*, double fraction) { return progress("exact propagation (--compare-exact)", fraction); });
+      exact.assign(run.V, inf);
+      geodesics.distances(boost::make_iterator_property_map(exact.begin(), get(boost::vertex_index, mesh)));
+      run.exact_seconds = seconds_since(t_exact);
+    }
+    run.exact_compared = true;
+    const auto index = get(boost::vertex_index, mesh);
+    run.error = PG::geodesic_distance_error(mesh, boost::make_iterator_property_map(run.distance.cbegin(), index),
+                                            boost::make_iterator_property_map(exact.cbegin(), index));
+    for(auto& t : run.targets)
+      if(t.where.at_vertex) t.exact_distance = exact[t.where.index];
+  }
 
   // CGAL's Surface_mesh_shortest_path on the same sources, for comparison.
   if(s.compare_cgal) {
@@ -880,7 +716,7 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
     const auto t_cgal = std::chrono::steady_clock::now();
     Smsp cgal(mesh);
     for(const Geo_location& loc : run.sources) {
-      if(loc.at_vertex) cgal.add_source_point(vertex(loc.index));
+      if(loc.at_vertex) cgal.add_source_point(Geo_mesh::Vertex_index(Geo_mesh::size_type(loc.index)));
       else {
         const auto w = face_location_weights(loc);
         cgal.add_source_point(Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)), Smsp::Barycentric_coordinates{{w[0], w[1], w[2]}});
@@ -920,9 +756,6 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
   // Outputs.
   const auto t_output = std::chrono::steady_clock::now();
   const std::filesystem::path folder = prepare_output_folder(s.output);
-  run.ply = (folder / "distances.ply").string();
-  write_distance_ply(run.ply, mesh, run.distance, run.max_distance);
-
   Geodesic_picture pic;
   pic.points.resize(run.V);
   for(Geo_mesh::Vertex_index v : mesh.vertices()) pic.points[v.idx()] = geo_detail::vec(mesh.point(v));
@@ -939,17 +772,26 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
     for(const Geo_point& p : t.path) path.push_back(geo_detail::vec(p));
     pic.paths.push_back(path);
   }
+  run.ply = (folder / "distances.ply").string();
+  const std::string what = method.description();
+  write_distance_ply(run.ply, pic.points, pic.triangles, run.distance, run.max_distance,
+                     what.substr(0, what.find(" distances")) + " distance"); // "exact geodesic distance", ...
   pic.view = s.view;
   pic.up = s.up;
   pic.levels = s.levels;
   std::ostringstream title, c1, c2;
-  title << "exact geodesic distances on " << mesh_name;
+  title << method.description() << " on " << mesh_name;
   c1 << run.V << " vertices, " << run.F << " faces; " << run.sources.size() << (run.sources.size() == 1 ? " source" : " sources")
-     << "; propagation " << std::setprecision(3) << run.seconds_compute << " s, " << run.stats.windows_created << " windows created";
+     << std::setprecision(3);
+  if(method.is_heat()) c1 << "; precomputation " << run.seconds_setup << " s, solve " << run.seconds_compute << " s";
+  else if(method.has_windows()) c1 << "; propagation " << run.seconds_compute << " s, " << run.stats.windows_created << " windows created";
+  else c1 << "; propagation " << run.seconds_compute << " s, " << run.stats.vertex_updates << " vertex updates";
   if(run.reachable == 0) c2 << "no vertex reachable";
   else c2 << "max distance " << std::setprecision(6) << run.max_distance << " (" << run.reachable << " of " << run.V << " vertices reachable)";
   for(std::size_t i = 0; i < run.targets.size() && i < 4; ++i)
     c2 << (i == 0 ? "; " : ", ") << "T" << i + 1 << " " << std::setprecision(5) << run.targets[i].distance;
+  if(run.exact_compared && !method.is_exact() && run.error.compared > 0)
+    c2 << "; mean error vs exact " << std::setprecision(3) << 100 * run.error.mean_relative << "%";
   pic.title = title.str();
   pic.caption_lines = {c1.str(), c2.str()};
   run.svg = (folder / "geodesics.svg").string();
@@ -969,14 +811,26 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
   for(std::size_t i = 0; i < run.sources.size() && i < 8; ++i) sum << (i ? ", " : "") << describe_location(run.sources[i]);
   if(run.sources.size() > 8) sum << ", ...";
   sum << ")\n";
+  sum << "method: " << method.text << ": " << method.description() << " (" << method.class_name() << ")";
+  if(method.kind == Geo_method_kind::merged)
+    sum << ", merge tolerance " << method.merge_eps << " x mean edge length " << std::setprecision(4) << run.mean_edge_length << " = "
+        << run.merge_tolerance << std::setprecision(10);
+  sum << "\n";
   if(s.limit >= 0) sum << "distance limit: " << s.limit << "\n";
-  sum << "memory mode: " << (s.full_field ? "full field" : "distances only") << (s.stop_at_targets ? ", stop at targets" : "") << "\n";
-  sum << std::setprecision(4) << "time: read " << run.seconds_read << " s, setup " << run.seconds_setup << " s, propagation "
-      << run.seconds_compute << " s, output " << run.seconds_output << " s\n";
-  sum << "windows: created " << run.stats.windows_created << ", propagated " << run.stats.windows_propagated << ", pruned "
-      << run.stats.windows_pruned << ", peak live " << run.stats.peak_live_windows << ", stored " << run.stats.stored_windows
-      << ", peak memory " << std::setprecision(3) << double(run.stats.peak_memory_bytes) / (1024.0 * 1024.0) << " MiB"
-      << (run.stats.stopped_early ? ", stopped early" : "") << "\n";
+  if(!method.is_heat())
+    sum << "memory mode: " << (s.full_field ? "full field" : "distances only") << (s.stop_at_targets ? ", stop at targets" : "") << "\n";
+  sum << std::setprecision(4) << "time: read " << run.seconds_read << " s, " << (method.is_heat() ? "precomputation " : "setup ")
+      << run.seconds_setup << " s, " << (method.is_heat() ? "solve " : "propagation ") << run.seconds_compute << " s, output "
+      << run.seconds_output << " s\n";
+  if(method.has_windows())
+    sum << "windows: created " << run.stats.windows_created << ", propagated " << run.stats.windows_propagated << ", pruned "
+        << run.stats.windows_pruned << (method.kind == Geo_method_kind::merged ? ", merged " + std::to_string(run.stats.windows_merged) : std::string())
+        << ", peak live " << run.stats.peak_live_windows << ", stored " << run.stats.stored_windows
+        << ", peak memory " << std::setprecision(3) << double(run.stats.peak_memory_bytes) / (1024.0 * 1024.0) << " MiB"
+        << (run.stats.stopped_early ? ", stopped early" : "") << "\n";
+  else if(!method.is_heat())
+    sum << "vertex updates: " << run.stats.vertex_updates << ", rejected by the dependence DAG " << run.stats.updates_rejected_by_dag
+        << (run.stats.stopped_early ? ", stopped early" : "") << "\n";
   sum << std::setprecision(10);
   if(run.reachable == 0) sum << "distances: no vertex is reachable (every distance is +infinity)\n";
   else sum << "distances: " << run.reachable << " of " << run.V << " vertices reachable, max distance " << run.max_distance
@@ -984,11 +838,15 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
   for(std::size_t i = 0; i < run.targets.size(); ++i) {
     const auto& t = run.targets[i];
     sum << "target T" << i + 1 << " " << describe_location(t.where) << (t.automatic ? " (farthest vertex)" : "") << ": ";
-    if(std::isnan(t.distance)) sum << "distance n/a (face point: needs --memory full)";
+    if(std::isnan(t.distance))
+      sum << (method.is_heat() ? "distance n/a (face point: the heat method gives vertex distances only)"
+                               : "distance n/a (face point: needs --memory full)");
     else if(!std::isfinite(t.distance)) sum << "unreachable";
     else sum << "distance " << t.distance;
+    if(!std::isnan(t.exact_distance) && !method.is_exact()) sum << " (exact: " << t.exact_distance << ")";
     if(!std::isnan(t.cgal_distance)) sum << " (CGAL: " << t.cgal_distance << ")";
-    if(!s.full_field) sum << ", no path (--memory distances)";
+    if(method.is_heat()) sum << ", no path (the heat method gives no paths)";
+    else if(!s.full_field) sum << ", no path (--memory distances)";
     else if(!t.path_error.empty()) sum << ", path tracing FAILED: " << t.path_error;
     else if(t.path.empty()) sum << ", no path";
     else sum << ", path length " << t.path_length << " (" << t.path_points << " points, relative difference to the distance "
@@ -996,6 +854,19 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
     sum << "\n";
   }
   if(run.targets.empty()) sum << "targets: none (no vertex is reachable at a positive distance)\n";
+  if(run.exact_compared) {
+    sum << std::setprecision(4) << "error vs exact (Exact_geodesic_distances_3, " << run.exact_seconds << " s; this method: "
+        << run.seconds_setup + run.seconds_compute << " s";
+    if(method.is_exact()) sum << "; the method is exact";
+    sum << "): over " << run.error.compared << " vertices mean relative error " << std::setprecision(4) << 100 * run.error.mean_relative
+        << "%, max relative error " << 100 * run.error.max_relative << "%, max absolute error " << std::setprecision(3) << run.error.max_absolute;
+    if(run.error.skipped_sources)
+      sum << "; " << run.error.skipped_sources << (run.error.skipped_sources == 1 ? " vertex" : " vertices") << " at distance 0 skipped";
+    if(run.error.unreachable_mismatches)
+      sum << "; " << run.error.unreachable_mismatches << " vertices reachable in one and not in the other"
+          << (s.limit >= 0 || s.stop_at_targets ? " (expected near the limit / the stopped front)" : "");
+    sum << "\n";
+  }
   if(run.compared) {
     sum << std::setprecision(4) << "CGAL Surface_mesh_shortest_path: " << run.cgal_seconds << " s (ours: " << run.seconds_setup + run.seconds_compute
         << " s); over " << run.compared_vertices << " vertices max relative difference " << std::setprecision(3) << run.max_relative_difference
@@ -1044,10 +915,23 @@ inline int command_geodesics(const Options& o)
 }
 
 // ------------------------------------------------------------------------------------------------------------
+// One row of the demo's method table: time, error against the exact run, picture.
+inline void md_flat_row(std::ostream& md, const std::string& mesh, const std::string& method, const Geodesics_run& run,
+                        const std::string& folder)
+{
+  const std::string link = folder + "/geodesics." + (run.png.empty() ? "svg" : "png");
+  md << "| " << mesh << " | " << method << " | " << std::setprecision(3) << run.seconds_setup + run.seconds_compute << " | ";
+  if(method == "exact") md << "0 (reference) | 0 (reference)";
+  else if(run.error.compared == 0) md << "- | -";
+  else md << geo_detail::number_text(100 * run.error.mean_relative, 3) << "% | " << geo_detail::number_text(100 * run.error.max_relative, 3) << "%";
+  if(run.error.unreachable_mismatches) md << " (" << run.error.unreachable_mismatches << " vertices reachable in one only)";
+  md << " | [" << link << "](" << link << ") |\n";
+}
+
 // The geodesics section of `mdcs demo`: one vertex source and three targets on CGAL's elephant (a generated
 // torus when CGAL's data is missing; with the dragon too unless --quick), compared with
-// Surface_mesh_shortest_path. Appends to summary.md; returns whether the checks passed.
-
+// Surface_mesh_shortest_path, then the same with the flat-exact approximation (its time and its error against the
+// exact run). Appends to summary.md; returns whether the checks passed.
 inline bool demo_geodesics(const std::filesystem::path& folder, bool quick, bool quiet, Progress_bar& progress, std::ostream& md)
 {
   const std::string dir = MDCS_CGAL_MESH_DIR;
@@ -1069,8 +953,11 @@ inline bool demo_geodesics(const std::filesystem::path& folder, bool quick, bool
   if(fallback) md << " CGAL's meshes are not installed (libcgal-demo), so a generated torus is used.";
   md << "\n\n| mesh | vertices | faces | propagation (s) | windows created | max distance | CGAL SMSP (s) | max relative difference | picture |\n"
         "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
-  std::ostringstream targets_md;
+  std::ostringstream targets_md, flat_md;
   targets_md << "\n| mesh | target | distance | CGAL SMSP distance | path length | path points |\n|---|---|---:|---:|---:|---:|\n";
+  flat_md << "\n| mesh | method | time (s) | mean relative error vs exact | max relative error vs exact | picture |\n"
+             "|---|---|---:|---:|---:|---|\n";
+  bool flat_ok = true;
   bool ok = true;
   std::string pictures; // the first PNG, shown in summary.md
   for(const std::string& path : meshes) {
@@ -1128,12 +1015,35 @@ inline bool demo_geodesics(const std::filesystem::path& folder, bool quick, bool
                  << " | " << t.path_points << " |\n";
     }
     if(pictures.empty() && !run.png.empty()) pictures = link;
+
+    // The same source and targets with the flat-exact approximation (thesis ch. 4.3), its error against the run above.
+    Geodesics_settings f = s;
+    f.method = parse_geo_method("flat-exact");
+    f.compare_cgal = false;
+    f.compare_exact = true;
+    f.output = (folder / ("geodesics-" + stem + "-flat-exact")).string();
+    md_flat_row(flat_md, name, "exact", run, "geodesics-" + stem);
+    try {
+      const Geodesics_run flat = run_geodesics_on(mesh, name, notes, seconds_read, f, progress, &run);
+      std::cout << "== flat-exact geodesics on " << name << "\n" << flat.summary << "\n";
+      md_flat_row(flat_md, name, "flat-exact", flat, "geodesics-" + stem + "-flat-exact");
+      if(!(flat.error.compared > 0) || flat.error.unreachable_mismatches) flat_ok = false;
+    } catch(const std::exception& e) { // reported in the table; the exact results above stay valid
+      std::cerr << "mdcs demo: flat-exact geodesics on " << name << " failed: " << e.what() << "\n";
+      flat_md << "| " << name << " | flat-exact | - | - | - | FAILED: " << e.what() << " |\n";
+      flat_ok = false;
+    }
   }
   md << targets_md.str();
   md << "\nSource: the leftmost vertex of the view; targets T1-T3: the rightmost, topmost and lowest vertices. "
         "Checks: every vertex distance within 1e-6 (relative) of CGAL's, and every path as long as its distance: "
      << (ok ? "passed" : "FAILED") << ".\n";
   if(!pictures.empty()) md << "\n![exact geodesic distances](" << pictures << ")\n";
+  md << "\nThe flat-exact approximation (`Flat_exact_geodesic_distances_3`, one interval per edge, thesis ch. 4.3) from the "
+        "same source, against the exact distances above; time = setup + propagation; errors over the vertices at positive "
+        "distance (thesis eq. 4.4.1 for the mean).\n"
+     << flat_md.str() << "\nFlat-exact ran on every mesh with every vertex reached: " << (flat_ok ? "yes" : "NO")
+     << " (its accuracy is reported, not checked).\n";
   return ok;
 }
 

@@ -22,7 +22,7 @@ const char* main_usage()
     "commands:\n"
     "  demo      run every capability on default data; pictures and summary.md in an output folder\n"
     "  curve     globally minimal curve for a univariate variational problem (catenoid, arc length, blobs)\n"
-    "  geodesics exact geodesic distances and shortest paths on a triangle mesh (OFF, PLY, OBJ, STL)\n"
+    "  geodesics geodesic distances (exact or approximate) and shortest paths on a triangle mesh (OFF, PLY, OBJ, STL)\n"
     "  mincut    max-flow / min-cut of a DIMACS file with the Min_cut component\n"
     "exit codes: 0 success, 1 runtime error, 2 wrong command line, 3 bad input data, 4 infeasible problem\n";
 }
@@ -42,7 +42,7 @@ int main(int argc, char** argv)
   try {
     if(command == "curve") return command_curve(Options(argc, argv, 2, {"no-local", "quiet", "help"}));
     if(command == "demo") return command_demo(Options(argc, argv, 2, {"quick", "quiet", "help"}));
-    if(command == "geodesics") return command_geodesics(Options(argc, argv, 2, {"stop-at-targets", "compare-cgal", "quiet", "help"}));
+    if(command == "geodesics") return command_geodesics(Options(argc, argv, 2, {"stop-at-targets", "compare-exact", "compare-cgal", "quiet", "help"}));
     if(command == "mincut") return command_mincut(Options(argc, argv, 2, {"help"}));
     std::cerr << "mdcs: unknown command '" << command << "'\n" << main_usage();
     return EXIT_USAGE;
