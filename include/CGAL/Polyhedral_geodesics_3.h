@@ -2,12 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Convenience header of the package Polyhedral_geodesics_3: geodesic distances and shortest paths on
-// triangle meshes.
+// triangle meshes, exact (window propagation) and approximate (interval merging, flat-exact, fast
+// marching, Dijkstra), and the error metric that compares them.
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_H
 
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/Merged_window_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/Flat_exact_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/Fast_marching_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/geodesic_distance_error.h>
 
 #endif // CGAL_POLYHEDRAL_GEODESICS_3_H

@@ -19,6 +19,7 @@
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_EXACT_WINDOW_PROPAGATION_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_EXACT_WINDOW_PROPAGATION_H
 
+#include <CGAL/MDCS/progress.h>
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
