@@ -165,16 +165,7 @@ protected:
     return sqrt(squared_distance_3(a, b));
   }
 
-  std::array<FT, 3> point_in_face(Index f, const std::array<FT, 3>& b) const
-  {
-    std::array<FT, 3> p = {FT(0), FT(0), FT(0)};
-    for(int k = 0; k < 3; ++k) {
-      const auto& q = mesh_.points[std::size_t(mesh_.source(3 * f + k))];
-      for(int i = 0; i < 3; ++i)
-        p[std::size_t(i)] += b[std::size_t(k)] * q[std::size_t(i)];
-    }
-    return p;
-  }
+  std::array<FT, 3> point_in_face(Index f, const std::array<FT, 3>& b) const { return internal::point_in_face(mesh_, f, b); }
 
   // b has exactly one zero coordinate: the halfedge of f between the two other corners
   static Index halfedge_of_edge_point(Index f, const std::array<FT, 3>& b)
@@ -381,42 +372,11 @@ protected:
     throw std::runtime_error("CGAL::Polyhedral_geodesics_3: the predecessor chain does not reach a source");
   }
 
-  Path_node vertex_node(Index v) const
-  {
-    Path_node n;
-    n.kind = Path_node::VERTEX;
-    n.index = v;
-    n.t = FT(0);
-    n.barycentric = {FT(0), FT(0), FT(0)};
-    n.point = mesh_.points[std::size_t(v)];
-    return n;
-  }
+  Path_node vertex_node(Index v) const { return vertex_path_node(mesh_, v); }
 
-  // the point (1 - r) source(g) + r target(g)
-  Path_node edge_node(Index g, const FT& r) const
-  {
-    Path_node n;
-    n.kind = Path_node::EDGE;
-    n.index = g;
-    n.t = r;
-    n.barycentric = {FT(0), FT(0), FT(0)};
-    const auto& a = mesh_.points[std::size_t(mesh_.source(g))];
-    const auto& c = mesh_.points[std::size_t(mesh_.target(g))];
-    for(int i = 0; i < 3; ++i)
-      n.point[std::size_t(i)] = (FT(1) - r) * a[std::size_t(i)] + r * c[std::size_t(i)];
-    return n;
-  }
+  Path_node edge_node(Index g, const FT& r) const { return edge_path_node(mesh_, g, r); }
 
-  Path_node face_node(Index f, const std::array<FT, 3>& b) const
-  {
-    Path_node n;
-    n.kind = Path_node::FACE;
-    n.index = f;
-    n.t = FT(0);
-    n.barycentric = b;
-    n.point = point_in_face(f, b);
-    return n;
-  }
+  Path_node face_node(Index f, const std::array<FT, 3>& b) const { return face_path_node(mesh_, f, b); }
 
   // the surface-point source k: a FACE node, or an EDGE node for a point on an edge
   Path_node source_node(Index k) const

@@ -441,45 +441,11 @@ protected:
     where.push_back({Mesh::face_of(tw), b});
   }
 
-  Path_node vertex_node(Index v) const
-  {
-    Path_node n;
-    n.kind = Path_node::VERTEX;
-    n.index = v;
-    n.t = FT(0);
-    n.barycentric = {FT(0), FT(0), FT(0)};
-    n.point = mesh_.points[std::size_t(v)];
-    return n;
-  }
+  Path_node vertex_node(Index v) const { return vertex_path_node(mesh_, v); }
 
-  Path_node edge_node(Index g, const FT& r) const
-  {
-    Path_node n;
-    n.kind = Path_node::EDGE;
-    n.index = g;
-    n.t = r;
-    n.barycentric = {FT(0), FT(0), FT(0)};
-    const auto& a = mesh_.points[std::size_t(mesh_.source(g))];
-    const auto& c = mesh_.points[std::size_t(mesh_.target(g))];
-    for(int i = 0; i < 3; ++i)
-      n.point[std::size_t(i)] = (FT(1) - r) * a[std::size_t(i)] + r * c[std::size_t(i)];
-    return n;
-  }
+  Path_node edge_node(Index g, const FT& r) const { return edge_path_node(mesh_, g, r); }
 
-  Path_node face_node(Index f, const std::array<FT, 3>& b) const
-  {
-    Path_node n;
-    n.kind = Path_node::FACE;
-    n.index = f;
-    n.t = FT(0);
-    n.barycentric = b;
-    for(int i = 0; i < 3; ++i) {
-      n.point[std::size_t(i)] = FT(0);
-      for(int k = 0; k < 3; ++k)
-        n.point[std::size_t(i)] += b[std::size_t(k)] * mesh_.points[std::size_t(mesh_.source(3 * f + k))][std::size_t(i)];
-    }
-    return n;
-  }
+  Path_node face_node(Index f, const std::array<FT, 3>& b) const { return face_path_node(mesh_, f, b); }
 
   // ------------------------------------------------------------------------------------------------
   // ------------------------------------------------------------------------------------------------
