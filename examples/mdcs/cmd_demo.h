@@ -6,6 +6,9 @@
 #include "cmd_curve.h"
 #include "cmd_geodesics.h"
 #include "cmd_mincut.h"
+#include "cmd_mwt.h"
+#include "cmd_silhouette.h"
+#include "cmd_surface.h"
 
 #include <cmath>
 #include <fstream>
@@ -191,6 +194,10 @@ inline int command_demo(const Options& o)
 
   // 7. Exact geodesic distances on a triangle mesh, checked against CGAL's Surface_mesh_shortest_path.
   if(!demo_geodesics(folder, quick, quiet, progress, md)) all_ok = false;
+  // 8-10. Minimal surfaces, minimum weight triangulations, simplified silhouettes.
+  if(!demo_surface(folder, quick, quiet, progress, md)) all_ok = false;
+  if(!demo_mwt(folder, quick, quiet, progress, md)) all_ok = false;
+  if(!demo_silhouette(folder, quick, quiet, progress, md)) all_ok = false;
 
   md << "\nTotal time " << std::setprecision(3) << seconds_since(t_start) << " s. Consistency checks: "
      << (all_ok ? "all passed" : "FAILED") << ".\n";

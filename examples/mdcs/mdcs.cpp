@@ -5,6 +5,9 @@
 #include "cmd_demo.h"
 #include "cmd_geodesics.h"
 #include "cmd_mincut.h"
+#include "cmd_mwt.h"
+#include "cmd_silhouette.h"
+#include "cmd_surface.h"
 
 #include <CGAL/MDCS/progress.h>
 
@@ -24,6 +27,9 @@ const char* main_usage()
     "  curve     globally minimal curve for a univariate variational problem (catenoid, arc length, blobs)\n"
     "  geodesics geodesic distances (exact or approximate) and shortest paths on a triangle mesh (OFF, PLY, OBJ, STL)\n"
     "  mincut    max-flow / min-cut of a DIMACS file with the Min_cut component\n"
+    "  mwt       minimum weight triangulation of a point set, certified (triangle LP, pruning)\n"
+    "  surface   globally minimal surface for a bivariate variational problem (random-plane BSP complex)\n"
+    "  silhouette simplified silhouette loops of a triangle mesh for a view (loop picking, loop mapping)\n"
     "exit codes: 0 success, 1 runtime error, 2 wrong command line, 3 bad input data, 4 infeasible problem\n";
 }
 
@@ -38,12 +44,17 @@ int main(int argc, char** argv)
   }
   const std::string command = argv[1];
   const char* usage = command == "curve" ? curve_usage() : command == "demo" ? demo_usage()
-                    : command == "geodesics" ? geodesics_usage() : command == "mincut" ? mincut_usage() : main_usage();
+                    : command == "geodesics" ? geodesics_usage() : command == "mincut" ? mincut_usage()
+                    : command == "mwt" ? mwt_usage() : command == "surface" ? surface_usage()
+                    : command == "silhouette" ? silhouette_usage() : main_usage();
   try {
     if(command == "curve") return command_curve(Options(argc, argv, 2, {"no-local", "quiet", "help"}));
     if(command == "demo") return command_demo(Options(argc, argv, 2, {"quick", "quiet", "help"}));
     if(command == "geodesics") return command_geodesics(Options(argc, argv, 2, {"stop-at-targets", "compare-exact", "compare-cgal", "quiet", "help"}));
     if(command == "mincut") return command_mincut(Options(argc, argv, 2, {"help"}));
+    if(command == "mwt") return command_mwt(Options(argc, argv, 2, mwt_flags()));
+    if(command == "surface") return command_surface(Options(argc, argv, 2, surface_flags()));
+    if(command == "silhouette") return command_silhouette(Options(argc, argv, 2, silhouette_flags()));
     std::cerr << "mdcs: unknown command '" << command << "'\n" << main_usage();
     return EXIT_USAGE;
   } catch(const Usage_error& e) {
