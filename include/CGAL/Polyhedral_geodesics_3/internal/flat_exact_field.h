@@ -1,0 +1,560 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The stored state of the flat-exact approximation (see flat_exact_propagation.h for the algorithm): the
+// distance, nearest source, window and DAG parent of every vertex, the mesh data packed for the propagation, the
+// distance function of an edge rebuilt from its two vertex distances, and the point queries (the distance at a
+// surface point, its nearest source). Path tracing (flat_exact_paths.h) and the propagation
+// (flat_exact_propagation.h) derive from it.
+
+#ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_FLAT_EXACT_FIELD_H
+#define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_FLAT_EXACT_FIELD_H
+
+#include <CGAL/MDCS/progress.h>
+#include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Polyhedral_geodesics_3 {
+namespace internal {
+
+template <class FT>
+class Flat_exact_field
+{
+public:
+  typedef Geodesic_mesh<FT> Mesh;
+  typedef typename Mesh::Index Index;
+  typedef Geodesic_path_node<FT> Path_node;
+  typedef Geodesic_point_distance<FT> Point_distance;
+
+  // The order of the edge queue (tuning and measurements). With `candidate` and `function_minimum` every value an
+  // edge gives is at least its key, so the distances below the front are final, which the distance limit and
+  // the stop targets rely on; the two others are for comparisons only. Vertex lowerings per vertex measured on
+  // CGAL's demo meshes (3 random sources each; mech-holes-shark in parentheses): candidate 1.00 - 1.19 (2.80),
+  // with a third fewer edges queued, function_minimum 1.14 - 1.63 (3.04), smaller_vertex about the same,
+  // larger_vertex 1.09 - 1.59 (3.24).
+  enum class Queue_key
+  {
+    candidate,        // the smallest value the edge gives to an opposite vertex that it lowers (default); an edge
+                      // that lowers neither is not queued
+    function_minimum, // the minimum of the edge's distance function over the edge
+    smaller_vertex,   // min(D(v1), D(v2))
+    larger_vertex     // max(D(v1), D(v2))
+  };
+
+  // Counters beyond Geodesic_statistics (tests and tuning).
+  struct Counters
+  {
+    std::size_t edges_propagated = 0;   // edges taken from the queue
+    std::size_t dag_searches = 0;       // depth-first searches for cycles (lowerings of reached vertices)
+    std::size_t dag_search_visits = 0;  // vertices visited by them
+    std::size_t side_links = 0;         // edges with side links (built with the first path query)
+    std::size_t side_links_refused = 0; // edges whose preferred side links would have closed a cycle
+    std::size_t stuck_restarts = 0;     // restarts through an edge with one unreached vertex (pinched vertices)
+  };
+
+  explicit Flat_exact_field(const Mesh& mesh) : mesh_(mesh)
+  {
+    unreached_ = FT(std::numeric_limits<double>::max() / 16);
+    if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
+      epsilon_ = FT(std::numeric_limits<FT>::epsilon());
+    else
+      epsilon_ = FT(0);
+    improvement_ = FT(16) * epsilon_;
+    build_halfedge_data();
+    build_vertex_edges();
+    vertex_is_pseudo_source_.assign(mesh_.number_of_vertices, 0);
+    // vertices where shortest paths can bend: saddles (angle sum above 2 pi) and reflex boundary vertices
+    for(std::size_t v = 0; v < mesh_.number_of_vertices; ++v)
+      vertex_is_pseudo_source_[v] = to_double_value(mesh_.vertex_angle_sum[v]) >
+                                    (mesh_.vertex_on_boundary[v] ? 1 : 2) * 3.14159265358979323846 + 1e-9;
+    clear();
+  }
+
+  void clear()
+  {
+    const std::size_t nv = mesh_.number_of_vertices, ne = mesh_.number_of_edges;
+    vs_.assign(nv, Vertex_state{unreached_, FT(0), -1, -1});
+    parent_he_.assign(nv, -1);
+    parent_kind_.assign(nv, NONE);
+    first_reached_.assign(nv, 0);
+    last_lowered_.assign(nv, 0);
+    clock_ = 0;
+    child_next_.assign(nv, -1);
+    child_prev_.assign(nv, -1);
+    child_head_.assign(ne, -1);
+    side_he_.clear();
+    side_mask_.clear();
+    heap_position_.assign(ne, -1);
+    edge_function_.assign(ne, Pseudo_source{false, FT(0), FT(0), FT(0), -1});
+    visit_vertex_.assign(nv, 0);
+    search_stamp_ = 0;
+    heap_.clear();
+    peak_heap_ = 0;
+    vertex_sources_.clear();
+    face_sources_.clear();
+    face_source_index_.clear();
+    stats_ = Geodesic_statistics();
+    counters_ = Counters();
+    front_ = FT(0);
+    bound_ = unreached_;
+    stopped_early_ = false;
+  }
+
+  void set_keep_windows(bool) {} // one interval per edge, always kept
+  void set_distance_limit(FT limit) { limit_ = limit; has_limit_ = true; }
+  void clear_distance_limit() { has_limit_ = false; }
+  void set_stop_targets(const std::vector<Index>& targets) { stop_targets_ = targets; }
+  void set_queue_key(Queue_key key) { queue_key_ = key; }
+  // Windows rooted at saddle and reflex boundary vertices (default on; off: the thesis's rule everywhere).
+  void set_vertex_windows(bool on) { vertex_windows_ = on; }
+
+  FT vertex_distance(Index v) const
+  {
+    const FT& d = vs_[std::size_t(v)].dist;
+    return final_value(d) ? d : FT(std::numeric_limits<double>::infinity());
+  }
+
+  Index vertex_source(Index v) const { return final_value(vs_[std::size_t(v)].dist) ? vs_[std::size_t(v)].source : -1; }
+
+  const Geodesic_statistics& statistics() const { return stats_; }
+  const Counters& counters() const { return counters_; }
+
+  // ------------------------------------------------------------------------------------------------
+  // Queries
+
+  Point_distance distance_at(Index f, const std::array<FT, 3>& b) const
+  {
+    const Candidate c = best_candidate(f, b);
+    if(c.kind == Candidate::NONE)
+      return {FT(std::numeric_limits<double>::infinity()), -1};
+    return {c.value, c.source};
+  }
+
+protected:
+  // ------------------------------------------------------------------------------------------------
+  // Types
+
+  enum Parent_kind : unsigned char
+  {
+    NONE,          // unreached
+    ROOT_VERTEX,   // a vertex source
+    ROOT_FACE,     // a corner of the face of a face source: parent_he_ is the index of the face source
+    EUCLID,        // straight from the pseudo-source of the edge of parent_he_ (the vertex is opposite it)
+    ALONG_SOURCE,  // along the edge from source(parent_he_) (the vertex is opposite parent_he_)
+    ALONG_TARGET,  // along the edge from target(parent_he_)
+    EDGE_NEIGHBOR  // along the edge of parent_he_ itself, from its other end (vertex sources, pinched vertices)
+  };
+
+  struct Vertex_source
+  {
+    Index vertex;
+    Index id;
+  };
+
+  struct Face_source
+  {
+    Index face;
+    std::array<FT, 3> barycentric;
+    Index id;
+  };
+
+  struct Heap_entry
+  {
+    FT key;
+    Index edge;
+  };
+
+  // The distance function of an edge: sigma + the distance to a pseudo-source (x, +-y), y >= 0, in the frame
+  // of one of its halfedges; `root` is the vertex the window hangs from (-1: straight from a source).
+  struct Pseudo_source
+  {
+    bool valid;
+    FT x, y;
+    FT sigma;
+    Index root;
+  };
+
+  // An edge around a vertex: its ends (those of its canonical halfedge), the vertices opposite it (-1: none)
+  // and its length.
+  struct Incident_edge
+  {
+    Index edge, h, a, b, y1, y2; // h: the canonical halfedge, from a to b
+    FT length;
+  };
+
+  struct Candidate
+  {
+    enum Kind { NONE, CORNER, EDGE, FACE_SOURCE };
+    Kind kind = NONE;
+    FT value = FT(0);
+    Index source = -1;
+    Index index = -1;  // corner vertex, halfedge (EDGE), or face source
+    Index face = -1;   // FACE_SOURCE: its face
+    FT t = FT(0);      // EDGE: where the segment to the pseudo-source crosses the halfedge (arc length)
+    bool on_edge = false; // EDGE: the query point itself lies on that edge
+  };
+
+  // The state of the back-tracing: at a vertex, or on the edge of `halfedge` at arc length t from its source,
+  // arrived from the face of `halfedge`.
+  struct Walker
+  {
+    Index vertex;
+    Index halfedge;
+    FT t;
+  };
+
+  // ------------------------------------------------------------------------------------------------
+  // Mesh helpers
+
+  void build_vertex_edges()
+  {
+    const std::size_t nv = mesh_.number_of_vertices, ne = mesh_.number_of_edges;
+    vedge_begin_.assign(nv + 1, 0);
+    for(std::size_t e = 0; e < ne; ++e) {
+      const Index h = mesh_.edge_halfedge[e];
+      const Index a = he_source(h), b = he_target(h);
+      ++vedge_begin_[std::size_t(a) + 1];
+      if(b != a)
+        ++vedge_begin_[std::size_t(b) + 1];
+    }
+    for(std::size_t v = 0; v < nv; ++v)
+      vedge_begin_[v + 1] += vedge_begin_[v];
+    vedge_.resize(std::size_t(vedge_begin_[nv]));
+    std::vector<Index> fill(vedge_begin_.begin(), vedge_begin_.end() - 1);
+    for(std::size_t e = 0; e < ne; ++e) {
+      const Index h = mesh_.edge_halfedge[e], tw = he_[std::size_t(h)].twin;
+      const Index a = he_source(h), b = he_target(h);
+      const Incident_edge ie{Index(e), h, a, b, he_opposite_vertex(h), tw < 0 ? Index(-1) : he_opposite_vertex(tw),
+                             he_[std::size_t(h)].length};
+      vedge_[std::size_t(fill[std::size_t(a)]++)] = ie;
+      if(b != a)
+        vedge_[std::size_t(fill[std::size_t(b)]++)] = ie;
+    }
+  }
+
+  // The mesh's data per halfedge, packed for the propagation (one cache line per face instead of six arrays).
+  struct Halfedge_data
+  {
+    Point_2_ft<FT> opposite; // the opposite corner in the halfedge's frame
+    FT length;
+    Index source, twin, edge;
+  };
+
+  void build_halfedge_data()
+  {
+    const std::size_t nh = 3 * mesh_.number_of_faces;
+    he_.resize(nh);
+    for(std::size_t h = 0; h < nh; ++h)
+      he_[h] = Halfedge_data{mesh_.he_opposite[h], mesh_.he_length[h], mesh_.he_source[h], mesh_.he_twin[h],
+                             mesh_.he_edge[h]};
+  }
+
+  Index he_source(Index h) const { return he_[std::size_t(h)].source; }
+  Index he_target(Index h) const { return he_[std::size_t(Mesh::next(h))].source; }
+  Index he_opposite_vertex(Index h) const { return he_[std::size_t(Mesh::prev(h))].source; }
+
+  Index other_end(Index e, Index v) const
+  {
+    const Index h = mesh_.edge_halfedge[std::size_t(e)];
+    return he_source(h) == v ? he_target(h) : he_source(h);
+  }
+
+  bool reached(Index v) const { return vs_[std::size_t(v)].dist < unreached_; }
+
+  bool final_value(const FT& d) const { return d < unreached_ && d <= bound_; }
+
+  // ------------------------------------------------------------------------------------------------
+  // The distance function of an edge
+
+  // The pseudo-source at distances c1 from (0,0) and c2 from (L,0), with y >= 0 (Heron's formula for y,
+  // accurate when the pseudo-source is close to the line of the edge). Invalid when no such point exists
+  // (|c1 - c2| > L or c1 + c2 < L beyond rounding) or L == 0.
+  Pseudo_source pseudo_source(const FT& c1, const FT& c2, const FT& L) const
+  {
+    using std::sqrt;
+    Pseudo_source s{false, FT(0), FT(0), FT(0), -1};
+    if(!(L > FT(0)))
+      return s;
+    const FT tol = FT(64) * epsilon_ * (c1 + c2 + L);
+    FT f1 = L + c2 - c1, f2 = c1 + c2 - L, f3 = L + c1 - c2;
+    if(f1 < -tol || f2 < -tol || f3 < -tol)
+      return s;
+    if(f1 < FT(0)) f1 = FT(0);
+    if(f2 < FT(0)) f2 = FT(0);
+    if(f3 < FT(0)) f3 = FT(0);
+    const FT f4 = c1 + c2 + L;
+    s.valid = true;
+    const FT inverse = FT(1) / (FT(2) * L);
+    s.x = (c1 - c2) * (c1 + c2) * inverse + L / FT(2);
+    s.y = sqrt(f1 * f2 * f3 * f4) * inverse;
+    return s;
+  }
+
+  // The window of the edge (a, b): the one both ends belong to, or the window of one end rooted at the other;
+  // else (two windows meet on the edge) none: a pseudo-source at zero offset, the thesis's rule.
+  void edge_window(Index a, Index b, FT& sigma, Index& root) const
+  {
+    const std::size_t ia = std::size_t(a), ib = std::size_t(b);
+    if(vs_[ia].root == vs_[ib].root && vs_[ia].offset == vs_[ib].offset) {
+      sigma = vs_[ia].offset;
+      root = vs_[ia].root;
+    } else if(vs_[ib].root == a && vs_[ib].offset == vs_[ia].dist) {
+      sigma = vs_[ia].dist;
+      root = a;
+    } else if(vs_[ia].root == b && vs_[ia].offset == vs_[ib].dist) {
+      sigma = vs_[ib].dist;
+      root = b;
+    } else {
+      sigma = FT(0);
+      root = -1;
+    }
+  }
+
+  // The distance function of the edge of h in h's frame (pseudo-source with the magnitude of y).
+  Pseudo_source pseudo_source_of(Index h) const
+  {
+    return pseudo_source_ab(he_source(h), he_target(h), he_[std::size_t(h)].length);
+  }
+
+  // The same for the edge from a to b of length L, in the frame where a is at (0,0) and b at (L,0).
+  Pseudo_source pseudo_source_ab(Index a, Index b, const FT& L) const
+  {
+    // two sources meet on the edge: no single pseudo-source explains both ends (rebuilding one would put a
+    // vertex beyond the edge too close to both), the edge propagates along its ends only
+    if(vs_[std::size_t(a)].source != vs_[std::size_t(b)].source)
+      return Pseudo_source{false, FT(0), FT(0), FT(0), -1};
+    FT sigma;
+    Index root;
+    edge_window(a, b, sigma, root);
+    Pseudo_source s = pseudo_source(vs_[std::size_t(a)].dist - sigma, vs_[std::size_t(b)].dist - sigma, L);
+    s.sigma = sigma;
+    s.root = root;
+    return s;
+  }
+
+  // The nearest source of the vertex opposite h when it is reached from the edge of h in the way `kind`.
+  Index source_through(Index h, Parent_kind kind) const
+  {
+    const Index a = he_source(h), b = he_target(h);
+    if(kind == ALONG_SOURCE) return vs_[std::size_t(a)].source;
+    if(kind == ALONG_TARGET) return vs_[std::size_t(b)].source;
+    if(vs_[std::size_t(a)].source == vs_[std::size_t(b)].source)
+      return vs_[std::size_t(a)].source;
+    const FT via_a = vs_[std::size_t(a)].dist + he_[std::size_t(Mesh::prev(h))].length;
+    const FT via_b = vs_[std::size_t(b)].dist + he_[std::size_t(Mesh::next(h))].length;
+    return via_a <= via_b ? vs_[std::size_t(a)].source : vs_[std::size_t(b)].source;
+  }
+
+  // The edge a vertex was lowered from (-1: a source, or unreached).
+  Index parent_edge(Index v) const
+  {
+    const Parent_kind k = Parent_kind(parent_kind_[std::size_t(v)]);
+    if(k == NONE || k == ROOT_VERTEX || k == ROOT_FACE)
+      return -1;
+    return he_[std::size_t(parent_he_[std::size_t(v)])].edge;
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Points in faces
+
+  static FT length_2(const FT& x, const FT& y)
+  {
+    using std::sqrt;
+    return sqrt(x * x + y * y);
+  }
+
+  // The point with barycentric coordinates b of face f, in the frame of the face's halfedge 3f+k.
+  Point_2_ft<FT> point_in_halfedge_frame(Index f, const std::array<FT, 3>& b, int k) const
+  {
+    const Index g = 3 * f + k;
+    const auto& o = he_[std::size_t(g)].opposite;
+    const FT len = he_[std::size_t(g)].length;
+    const FT wt = b[std::size_t((k + 1) % 3)], wo = b[std::size_t((k + 2) % 3)];
+    return Point_2_ft<FT>{wt * len + wo * o.x, wo * o.y};
+  }
+
+  bool usable(Index v) const { return reached(v) && (!stopped_early_ || vs_[std::size_t(v)].dist <= bound_); }
+
+  bool has_face_source(Index f) const
+  {
+    auto it = std::lower_bound(face_source_index_.begin(), face_source_index_.end(), std::make_pair(f, Index(-1)));
+    return it != face_source_index_.end() && it->first == f;
+  }
+
+  // The best way to reach the point (f, b): a face source in f, a corner, or the pseudo-source of an edge of f
+  // seen through that edge. A point on an edge is also looked at from the face on the other side.
+  // With `dag_only` (paths, side links built), an edge whose side links point to the query's face is skipped:
+  // its distance does not come from across it (a tie in degenerate faces).
+  Candidate best_candidate(Index f, const std::array<FT, 3>& b, bool dag_only = false) const
+  {
+    Candidate best;
+    int zeros = 0, nonzero = 0;
+    for(int k = 0; k < 3; ++k) {
+      if(b[std::size_t(k)] == FT(0)) ++zeros;
+      else nonzero = k;
+    }
+    if(zeros >= 2) {
+      const Index v = he_source(3 * f + nonzero);
+      if(usable(v) && final_value(vs_[std::size_t(v)].dist)) {
+        best.kind = Candidate::CORNER;
+        best.value = vs_[std::size_t(v)].dist;
+        best.source = vs_[std::size_t(v)].source;
+        best.index = v;
+      }
+      return best;
+    }
+    candidates_in_face(f, b, best, dag_only);
+    if(zeros == 1) {
+      int k = 0;
+      while(b[std::size_t((k + 2) % 3)] != FT(0))
+        ++k;
+      const Index g = 3 * f + k;
+      const Index tw = he_[std::size_t(g)].twin;
+      if(tw >= 0) {
+        std::array<FT, 3> b2 = {FT(0), FT(0), FT(0)};
+        b2[std::size_t(tw % 3)] = b[std::size_t((k + 1) % 3)];
+        b2[std::size_t((tw % 3 + 1) % 3)] = b[std::size_t(k)];
+        candidates_in_face(Mesh::face_of(tw), b2, best, dag_only);
+      }
+    }
+    if(best.kind != Candidate::NONE && !final_value(best.value))
+      best.kind = Candidate::NONE;
+    return best;
+  }
+
+  void consider(Candidate& best, const Candidate& c) const
+  {
+    if(best.kind == Candidate::NONE || c.value < best.value)
+      best = c;
+  }
+
+  void candidates_in_face(Index f, const std::array<FT, 3>& b, Candidate& best, bool dag_only) const
+  {
+    using std::sqrt;
+    // face sources
+    auto it = std::lower_bound(face_source_index_.begin(), face_source_index_.end(), std::make_pair(f, Index(-1)));
+    for(; it != face_source_index_.end() && it->first == f; ++it) {
+      const Face_source& s = face_sources_[std::size_t(it->second)];
+      const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, 0), q = point_in_halfedge_frame(f, s.barycentric, 0);
+      Candidate c;
+      c.kind = Candidate::FACE_SOURCE;
+      c.value = length_2(p.x - q.x, p.y - q.y);
+      c.source = s.id;
+      c.index = it->second;
+      c.face = f;
+      consider(best, c);
+    }
+    for(int k = 0; k < 3; ++k) {
+      const Index h = 3 * f + k;
+      const Index a = he_source(h), bv = he_target(h);
+      const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, k);
+      if(usable(a)) {
+        Candidate c;
+        c.kind = Candidate::CORNER;
+        c.value = vs_[std::size_t(a)].dist + length_2(p.x, p.y);
+        c.source = vs_[std::size_t(a)].source;
+        c.index = a;
+        consider(best, c);
+      }
+      if(!usable(a) || !usable(bv))
+        continue;
+      if(dag_only && side_he_[std::size_t(he_[std::size_t(h)].edge)] == h)
+        continue;
+      const FT L = he_[std::size_t(h)].length;
+      const Pseudo_source s = pseudo_source_of(h);
+      if(!s.valid)
+        continue;
+      const FT py = p.y < FT(0) ? FT(0) : p.y;
+      const FT denom = py + s.y;
+      if(!(denom > FT(0)))
+        continue;
+      const FT t = s.x + (p.x - s.x) * s.y / denom;
+      if(!(t >= FT(0) && t <= L))
+        continue;
+      Candidate c;
+      c.kind = Candidate::EDGE;
+      const FT dx = p.x - s.x;
+      c.value = s.sigma + sqrt(dx * dx + denom * denom);
+      c.source = source_through(h, EUCLID);
+      c.index = h;
+      c.t = t;
+      c.on_edge = b[std::size_t((k + 2) % 3)] == FT(0);
+      consider(best, c);
+    }
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Data
+
+  const Mesh& mesh_;
+  FT unreached_;
+  FT epsilon_;
+  FT improvement_; // a lowering must beat the current distance by this relative amount (rounding)
+  Queue_key queue_key_ = Queue_key::candidate;
+  bool vertex_windows_ = true; // windows rooted at saddle and reflex boundary vertices
+
+  // per vertex
+  // the hot per-vertex data, together: the distance, the offset of the vertex's window (the distance of its
+  // root), the nearest source, the root vertex of the window (-1: a source)
+  struct Vertex_state
+  {
+    FT dist;
+    FT offset;
+    Index source;
+    Index root;
+  };
+  std::vector<Vertex_state> vs_;
+  std::vector<Index> parent_he_;            // see Parent_kind
+  std::vector<unsigned char> parent_kind_;
+  std::vector<char> vertex_is_pseudo_source_; // saddle or boundary vertex
+  std::vector<std::uint32_t> first_reached_, last_lowered_; // lowering times (clock_)
+  std::uint32_t clock_ = 0;
+  std::vector<Index> child_next_, child_prev_; // the list of the vertices updated from the same edge
+  std::vector<Index> vedge_begin_;
+  std::vector<Incident_edge> vedge_;        // the edges around each vertex
+  std::vector<Halfedge_data> he_;
+  // per edge
+  std::vector<Index> child_head_;           // first vertex updated from the edge
+  // side links, built with the first path query (mutable: a cache)
+  mutable std::vector<Index> side_he_;      // the halfedge of the edge in the face of its side links, -1: none
+  mutable std::vector<unsigned char> side_mask_; // its side parents: bit 0 the edge of next(side_he_), bit 1 prev
+  std::vector<Index> heap_position_;        // the edge's position in heap_, -1: not queued
+  std::vector<Pseudo_source> edge_function_; // the distance function of a queued edge (canonical frame)
+  // searches
+  std::vector<std::uint32_t> visit_vertex_;
+  std::vector<Index> stack_, starts_, touched_;
+  std::uint32_t search_stamp_ = 0;
+  bool recording_touched_ = false;
+
+  std::vector<Heap_entry> heap_;
+  std::size_t peak_heap_ = 0;
+  std::vector<Vertex_source> vertex_sources_;
+  std::vector<Face_source> face_sources_;
+  std::vector<std::pair<Index, Index>> face_source_index_; // (face, face source), sorted
+
+  std::vector<Index> stop_targets_;
+  FT limit_ = FT(0);
+  bool has_limit_ = false;
+  FT front_ = FT(0);
+  FT bound_ = FT(0);
+  bool stopped_early_ = false;
+  Geodesic_statistics stats_;
+  mutable Counters counters_;
+};
+
+} // namespace internal
+} // namespace Polyhedral_geodesics_3
+} // namespace CGAL
+
+#endif // CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_FLAT_EXACT_FIELD_H
