@@ -4,11 +4,11 @@
 
 #include "cli_common.h"
 #include "cmd_curve.h"
-#include "cmd_geodesics.h"
 #include "cmd_mincut.h"
 #include "cmd_mwt.h"
 #include "cmd_silhouette.h"
 #include "cmd_surface.h"
+#include "demo_geodesics.h"
 
 #include <cmath>
 #include <fstream>

@@ -7,6 +7,7 @@
 #include "cli_common.h"
 #include "cmd_mincut.h" // Input_error
 #include "geodesic_render.h"
+#include "mesh_input.h"
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
@@ -18,11 +19,8 @@
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_shortest_path.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
 #include <array>
@@ -44,13 +42,6 @@
 namespace mdcs_cli {
 
 namespace PG = CGAL::Polyhedral_geodesics_3;
-typedef CGAL::Exact_predicates_inexact_constructions_kernel Geo_kernel;
-typedef Geo_kernel::Point_3 Geo_point;
-typedef CGAL::Surface_mesh<Geo_point> Geo_mesh;
-
-namespace geo_detail {
-inline Geo_vec vec(const Geo_point& p) { return {{p.x(), p.y(), p.z()}}; }
-} // namespace geo_detail
 
 inline const char* geodesics_usage()
 {
@@ -245,122 +236,6 @@ struct Geodesics_run
   }
 };
 
-// ------------------------------------------------------------------------------------------------------------
-// Generated meshes (for a machine without CGAL's data, and for `@torus` / `@icosphere`).
-
-inline void add_outward_triangles(Geo_mesh& m, const std::vector<Geo_point>& points,
-                                  std::vector<std::array<std::size_t, 3>> triangles)
-{
-  double volume = 0; // six times the signed volume: flip everything if the faces point inwards
-  for(const auto& t : triangles)
-    volume += geo_detail::dot(geo_detail::vec(points[t[0]]), geo_detail::cross(geo_detail::vec(points[t[1]]), geo_detail::vec(points[t[2]])));
-  if(volume < 0)
-    for(auto& t : triangles) std::swap(t[1], t[2]);
-  std::vector<Geo_mesh::Vertex_index> v;
-  for(const Geo_point& p : points) v.push_back(m.add_vertex(p));
-  for(const auto& t : triangles) m.add_face(v[t[0]], v[t[1]], v[t[2]]);
-}
-
-// A torus around the y axis: radii R and r, nu x nv quads split into two triangles each.
-inline void make_torus_mesh(Geo_mesh& m, double R, double r, std::size_t nu, std::size_t nv)
-{
-  std::vector<Geo_point> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  const double pi = 3.14159265358979323846;
-  for(std::size_t i = 0; i < nu; ++i)
-    for(std::size_t j = 0; j < nv; ++j) {
-      const double u = 2 * pi * double(i) / double(nu), w = 2 * pi * double(j) / double(nv);
-      points.emplace_back((R + r * std::cos(w)) * std::cos(u), r * std::sin(w), (R + r * std::cos(w)) * std::sin(u));
-    }
-  auto id = [&](std::size_t i, std::size_t j) { return (i % nu) * nv + (j % nv); };
-  for(std::size_t i = 0; i < nu; ++i)
-    for(std::size_t j = 0; j < nv; ++j) {
-      triangles.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
-      triangles.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
-    }
-  add_outward_triangles(m, points, triangles);
-}
-
-// The unit icosphere: an icosahedron with every triangle split into four, `levels` times.
-inline void make_icosphere_mesh(Geo_mesh& m, int levels)
-{
-  const double t = (1.0 + std::sqrt(5.0)) / 2;
-  std::vector<Geo_vec> p = {{{-1, t, 0}}, {{1, t, 0}}, {{-1, -t, 0}}, {{1, -t, 0}}, {{0, -1, t}}, {{0, 1, t}},
-                            {{0, -1, -t}}, {{0, 1, -t}}, {{t, 0, -1}}, {{t, 0, 1}}, {{-t, 0, -1}}, {{-t, 0, 1}}};
-  for(auto& x : p) x = geo_detail::normalized(x);
-  std::vector<std::array<std::size_t, 3>> f = {{{0, 11, 5}}, {{0, 5, 1}}, {{0, 1, 7}}, {{0, 7, 10}}, {{0, 10, 11}},
-    {{1, 5, 9}}, {{5, 11, 4}}, {{11, 10, 2}}, {{10, 7, 6}}, {{7, 1, 8}}, {{3, 9, 4}}, {{3, 4, 2}}, {{3, 2, 6}},
-    {{3, 6, 8}}, {{3, 8, 9}}, {{4, 9, 5}}, {{2, 4, 11}}, {{6, 2, 10}}, {{8, 6, 7}}, {{9, 8, 1}}};
-  for(int level = 0; level < levels; ++level) {
-    std::map<std::pair<std::size_t, std::size_t>, std::size_t> middle;
-    auto mid = [&](std::size_t a, std::size_t b) {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      const auto it = middle.find(key);
-      if(it != middle.end()) return it->second;
-      p.push_back(geo_detail::normalized({{p[a][0] + p[b][0], p[a][1] + p[b][1], p[a][2] + p[b][2]}}));
-      return middle[key] = p.size() - 1;
-    };
-    std::vector<std::array<std::size_t, 3>> g;
-    for(const auto& tri : f) {
-      const std::size_t a = mid(tri[0], tri[1]), b = mid(tri[1], tri[2]), c = mid(tri[2], tri[0]);
-      g.push_back({{tri[0], a, c}});
-      g.push_back({{tri[1], b, a}});
-      g.push_back({{tri[2], c, b}});
-      g.push_back({{a, b, c}});
-    }
-    f.swap(g);
-  }
-  std::vector<Geo_point> points;
-  for(const auto& x : p) points.emplace_back(x[0], x[1], x[2]);
-  add_outward_triangles(m, points, f);
-}
-
-// Reads MESH (or generates @torus / @icosphere); repairs and triangulates when needed, noting it in `notes`.
-inline void load_geodesics_mesh(const std::string& path, Geo_mesh& mesh, std::vector<std::string>& notes)
-{
-  mesh.clear();
-  if(path == "@torus") {
-    make_torus_mesh(mesh, 1.0, 0.4, 96, 40);
-    return;
-  }
-  if(path == "@icosphere") {
-    make_icosphere_mesh(mesh, 4);
-    return;
-  }
-  std::error_code ec;
-  if(!std::filesystem::is_regular_file(path, ec)) throw Input_error("cannot open '" + path + "'");
-  bool ok = false;
-  try {
-    ok = CGAL::IO::read_polygon_mesh(path, mesh);
-  } catch(const std::exception&) {
-    ok = false;
-  }
-  if(!ok || faces(mesh).empty()) {
-    // Not a valid polygon mesh as is (e.g. non-manifold, or a polygon soup): CGAL's repair and orientation.
-    mesh.clear();
-    bool repaired = false;
-    try {
-      repaired = CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(path, mesh);
-    } catch(const std::exception&) {
-      repaired = false;
-    }
-    if(!repaired)
-      throw Input_error("cannot read a polygon mesh from '" + path + "' (OFF, PLY, OBJ or STL; not a polygon mesh even after repair)");
-    if(!faces(mesh).empty())
-      notes.push_back("the file is not a valid polygon mesh as is: it was repaired and oriented (CGAL::Polygon_mesh_processing::IO::"
-                      "read_polygon_mesh); vertex and face indices refer to the repaired mesh written to distances.ply");
-  }
-  if(faces(mesh).empty()) throw Input_error("'" + path + "' has no face");
-  if(mesh.has_garbage()) mesh.collect_garbage();
-  if(!CGAL::is_triangle_mesh(mesh)) {
-    const std::size_t before = mesh.number_of_faces();
-    if(!CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
-      throw Input_error("'" + path + "' has faces that cannot be triangulated");
-    if(mesh.has_garbage()) mesh.collect_garbage();
-    notes.push_back("faces with more than three corners were triangulated (" + std::to_string(before) + " -> " +
-                    std::to_string(mesh.number_of_faces()) + " faces); face indices refer to the triangulated mesh");
-  }
-}
 
 // ------------------------------------------------------------------------------------------------------------
 // Sources and targets.
@@ -912,139 +787,6 @@ inline int command_geodesics(const Options& o)
   const Geodesics_run run = run_geodesics(s, progress);
   std::cout << run.summary;
   return EXIT_OK;
-}
-
-// ------------------------------------------------------------------------------------------------------------
-// One row of the demo's method table: time, error against the exact run, picture.
-inline void md_flat_row(std::ostream& md, const std::string& mesh, const std::string& method, const Geodesics_run& run,
-                        const std::string& folder)
-{
-  const std::string link = folder + "/geodesics." + (run.png.empty() ? "svg" : "png");
-  md << "| " << mesh << " | " << method << " | " << std::setprecision(3) << run.seconds_setup + run.seconds_compute << " | ";
-  if(method == "exact") md << "0 (reference) | 0 (reference)";
-  else if(run.error.compared == 0) md << "- | -";
-  else md << geo_detail::number_text(100 * run.error.mean_relative, 3) << "% | " << geo_detail::number_text(100 * run.error.max_relative, 3) << "%";
-  if(run.error.unreachable_mismatches) md << " (" << run.error.unreachable_mismatches << " vertices reachable in one only)";
-  md << " | [" << link << "](" << link << ") |\n";
-}
-
-// The geodesics section of `mdcs demo`: one vertex source and three targets on CGAL's elephant (a generated
-// torus when CGAL's data is missing; with the dragon too unless --quick), compared with
-// Surface_mesh_shortest_path, then the same with the flat-exact approximation (its time and its error against the
-// exact run). Appends to summary.md; returns whether the checks passed.
-inline bool demo_geodesics(const std::filesystem::path& folder, bool quick, bool quiet, Progress_bar& progress, std::ostream& md)
-{
-  const std::string dir = MDCS_CGAL_MESH_DIR;
-  std::vector<std::string> meshes;
-  for(const char* name : {"elephant.off", "ChineseDragon-10kv.off"}) {
-    const std::string path = dir.empty() ? std::string() : (std::filesystem::path(dir) / name).string();
-    if(!path.empty() && std::filesystem::is_regular_file(path)) meshes.push_back(path);
-    if(quick) break;
-  }
-  const bool fallback = meshes.empty();
-  if(fallback) meshes.push_back("@torus");
-
-  md << "\n## Exact geodesic distances\n\n"
-        "Exact geodesic distances from one vertex by interval (window) propagation with side lobes "
-        "(`CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3`), shortest paths to three far vertices, and the same "
-        "distances from CGAL's `Surface_mesh_shortest_path` (the Chen-Han / Xin-Wang algorithm) as an independent check "
-        "on every vertex. The pictures colour the surface by distance with iso-distance lines; the paths are solid where "
-        "visible and dashed behind the surface. `distances.ply` holds every vertex distance (-1: unreachable).";
-  if(fallback) md << " CGAL's meshes are not installed (libcgal-demo), so a generated torus is used.";
-  md << "\n\n| mesh | vertices | faces | propagation (s) | windows created | max distance | CGAL SMSP (s) | max relative difference | picture |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
-  std::ostringstream targets_md, flat_md;
-  targets_md << "\n| mesh | target | distance | CGAL SMSP distance | path length | path points |\n|---|---|---:|---:|---:|---:|\n";
-  flat_md << "\n| mesh | method | time (s) | mean relative error vs exact | max relative error vs exact | picture |\n"
-             "|---|---|---:|---:|---:|---|\n";
-  bool flat_ok = true;
-  bool ok = true;
-  std::string pictures; // the first PNG, shown in summary.md
-  for(const std::string& path : meshes) {
-    Geo_mesh mesh;
-    std::vector<std::string> notes;
-    const auto t0 = std::chrono::steady_clock::now();
-    load_geodesics_mesh(path, mesh, notes);
-    const double seconds_read = seconds_since(t0);
-    // The source and targets: extreme vertices of the default view, so that they are on the silhouette and visible.
-    Geodesics_settings s;
-    s.mesh = path;
-    s.compare_cgal = true;
-    s.quiet = quiet;
-    const std::string stem = path[0] == '@' ? path.substr(1) : std::filesystem::path(path).stem().string();
-    // Three-quarter views that show the animals' sides (both are y-up), and the torus from above.
-    s.view = stem == "elephant" ? Geo_vec{{0.45, 0.3, 1}} : stem == "ChineseDragon-10kv" ? Geo_vec{{1, 0.35, 0.75}} : Geo_vec{{0.3, 1, 0.8}};
-    s.output = (folder / ("geodesics-" + stem)).string();
-    const Geo_vec d = geo_detail::normalized(s.view);
-    const Geo_vec right = geo_detail::normalized(geo_detail::cross(s.up, d)), up = geo_detail::cross(d, right);
-    std::size_t imin = 0, imax = 0, itop = 0, ibottom = 0;
-    double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
-    for(Geo_mesh::Vertex_index v : mesh.vertices()) {
-      if(mesh.is_isolated(v)) continue;
-      const Geo_vec p = geo_detail::vec(mesh.point(v));
-      const double x = geo_detail::dot(p, right), y = geo_detail::dot(p, up);
-      if(x < xmin) xmin = x, imin = v.idx();
-      if(x > xmax) xmax = x, imax = v.idx();
-      if(y < ymin) ymin = y, ibottom = v.idx();
-      if(y > ymax) ymax = y, itop = v.idx();
-    }
-    s.sources = std::to_string(imin);
-    s.targets = std::to_string(imax) + "," + std::to_string(itop) + "," + std::to_string(ibottom);
-    const std::string name = path[0] == '@' ? "torus (generated)" : std::filesystem::path(path).filename().string();
-    const Geodesics_run run = run_geodesics_on(mesh, name, notes, seconds_read, s, progress);
-    std::cout << "== geodesics on " << name << "\n" << run.summary << "\n";
-
-    const bool close = run.compared_vertices > 0 && run.max_relative_difference <= 1e-6 && run.reachability_mismatches == 0;
-    bool paths_ok = true;
-    for(const auto& t : run.targets)
-      if(!std::isfinite(t.distance) || t.path.empty() || !(std::abs(t.path_length - t.distance) <= 1e-6 * t.distance)) paths_ok = false;
-    if(!close || !paths_ok || run.targets.size() != 3) ok = false;
-    const std::string link = "geodesics-" + stem + "/geodesics." + (run.png.empty() ? "svg" : "png");
-    md << "| " << name << " | " << run.V << " | " << run.F << " | " << std::setprecision(3) << run.seconds_compute << " | "
-       << run.stats.windows_created << " | " << (run.reachable ? geo_detail::number_text(run.max_distance, 6) : std::string("- (none reachable)"))
-       << " | " << std::setprecision(3) << run.cgal_seconds << " | "
-       << (run.compared_vertices ? geo_detail::number_text(run.max_relative_difference, 2) : std::string("-"))
-       << (run.reachability_mismatches ? " (" + std::to_string(run.reachability_mismatches) + " vertices reachable in one only)" : std::string())
-       << " | [" << link << "](" << link << ") |\n";
-    for(std::size_t i = 0; i < run.targets.size(); ++i) {
-      const auto& t = run.targets[i];
-      targets_md << "| " << name << " | T" << i + 1 << " = vertex " << t.where.index << " | " << geo_detail::number_text(t.distance, 10)
-                 << " | " << geo_detail::number_text(t.cgal_distance, 10) << " | "
-                 << (!t.path_error.empty() ? "tracing failed: " + t.path_error
-                     : t.path.empty() ? std::string("no path") : geo_detail::number_text(t.path_length, 10))
-                 << " | " << t.path_points << " |\n";
-    }
-    if(pictures.empty() && !run.png.empty()) pictures = link;
-
-    // The same source and targets with the flat-exact approximation (thesis ch. 4.3), its error against the run above.
-    Geodesics_settings f = s;
-    f.method = parse_geo_method("flat-exact");
-    f.compare_cgal = false;
-    f.compare_exact = true;
-    f.output = (folder / ("geodesics-" + stem + "-flat-exact")).string();
-    md_flat_row(flat_md, name, "exact", run, "geodesics-" + stem);
-    try {
-      const Geodesics_run flat = run_geodesics_on(mesh, name, notes, seconds_read, f, progress, &run);
-      std::cout << "== flat-exact geodesics on " << name << "\n" << flat.summary << "\n";
-      md_flat_row(flat_md, name, "flat-exact", flat, "geodesics-" + stem + "-flat-exact");
-      if(!(flat.error.compared > 0) || flat.error.unreachable_mismatches) flat_ok = false;
-    } catch(const std::exception& e) { // reported in the table; the exact results above stay valid
-      std::cerr << "mdcs demo: flat-exact geodesics on " << name << " failed: " << e.what() << "\n";
-      flat_md << "| " << name << " | flat-exact | - | - | - | FAILED: " << e.what() << " |\n";
-      flat_ok = false;
-    }
-  }
-  md << targets_md.str();
-  md << "\nSource: the leftmost vertex of the view; targets T1-T3: the rightmost, topmost and lowest vertices. "
-        "Checks: every vertex distance within 1e-6 (relative) of CGAL's, and every path as long as its distance: "
-     << (ok ? "passed" : "FAILED") << ".\n";
-  if(!pictures.empty()) md << "\n![exact geodesic distances](" << pictures << ")\n";
-  md << "\nThe flat-exact approximation (`Flat_exact_geodesic_distances_3`, one interval per edge, thesis ch. 4.3) from the "
-        "same source, against the exact distances above; time = setup + propagation; errors over the vertices at positive "
-        "distance (thesis eq. 4.4.1 for the mean).\n"
-     << flat_md.str() << "\nFlat-exact ran on every mesh with every vertex reached: " << (flat_ok ? "yes" : "NO")
-     << " (its accuracy is reported, not checked).\n";
-  return ok;
 }
 
 } // namespace mdcs_cli
