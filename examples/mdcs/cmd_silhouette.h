@@ -1,34 +1,464 @@
-// `mdcs silhouette`: Silhouette simplification of a triangle mesh (issue 7).
-// SKELETON: the sub-command is wired into mdcs.cpp and cmd_demo.h; its implementation is being written.
+// `mdcs silhouette`: Silhouette simplification of a triangle mesh (issue 7, thesis chapter 5): the fine
+// silhouette for a view, the coarse mesh's silhouette, loop picking (method A) and loop mapping by
+// min cut (method B), drawn from the front and from the side; optionally a rotation sequence with the
+// temporal-coherence metric.
 #ifndef MDCS_CLI_CMD_SILHOUETTE_H
 #define MDCS_CLI_CMD_SILHOUETTE_H
 
 #include "cli_common.h"
+#include "cmd_mincut.h" // Input_error
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Silhouette_simplification_3.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#ifndef MDCS_CGAL_MESH_DIR
+#define MDCS_CGAL_MESH_DIR ""
+#endif
+
 namespace mdcs_cli {
 
-// Names of the options of `mdcs silhouette` that take no value.
-inline std::vector<std::string> silhouette_flags() { return {"quiet", "help"}; }
+namespace sil_detail {
 
-inline const char* silhouette_usage() { return "usage: mdcs silhouette ...   (not available yet)\n"; }
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point_3;
+typedef K::Vector_3 Vector_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+namespace SS = CGAL::Silhouette_simplification_3;
+typedef SS::View_3<K> View;
+typedef SS::Silhouette_simplifier_3<Mesh> Simplifier;
+
+// A camera: eye, forward, right and up unit vectors; perspective or orthographic.
+struct Camera
+{
+  Point_3 eye;
+  Vector_3 f, r, u;
+  bool perspective = true;
+
+  std::array<double, 2> project(const Point_3& p) const
+  {
+    const Vector_3 q = p - eye;
+    if(!perspective) return {q * r, q * u};
+    const double z = std::max(q * f, 1e-12);
+    return {(q * r) / z, (q * u) / z};
+  }
+};
+
+inline Vector_3 unit(const Vector_3& v) { return v / std::sqrt(v.squared_length()); }
+
+// The camera at azimuth/elevation (degrees) around the box centre, distance 2.5 diagonals, up axis `up`.
+inline Camera orbit_camera(const CGAL::Bbox_3& b, double azimuth_deg, double elevation_deg, int up)
+{
+  const double pi = 3.14159265358979323846;
+  const Point_3 c((b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2, (b.zmin() + b.zmax()) / 2);
+  const double d = std::sqrt((b.xmax() - b.xmin()) * (b.xmax() - b.xmin()) + (b.ymax() - b.ymin()) * (b.ymax() - b.ymin()) +
+                             (b.zmax() - b.zmin()) * (b.zmax() - b.zmin()));
+  const double a = azimuth_deg * pi / 180, e = elevation_deg * pi / 180;
+  // Local frame: up axis `up`, two horizontal axes.
+  Vector_3 U(0, 0, 0), X(0, 0, 0), Y(0, 0, 0);
+  if(up == 0) { U = Vector_3(1, 0, 0); X = Vector_3(0, 1, 0); Y = Vector_3(0, 0, 1); }
+  else if(up == 1) { U = Vector_3(0, 1, 0); X = Vector_3(0, 0, 1); Y = Vector_3(1, 0, 0); }
+  else { U = Vector_3(0, 0, 1); X = Vector_3(1, 0, 0); Y = Vector_3(0, 1, 0); }
+  const Vector_3 dir = std::cos(e) * (std::cos(a) * X + std::sin(a) * Y) + std::sin(e) * U;
+  Camera cam;
+  cam.eye = c + 2.5 * d * dir;
+  cam.f = unit(-dir);
+  cam.r = unit(CGAL::cross_product(cam.f, U));
+  cam.u = CGAL::cross_product(cam.r, cam.f);
+  return cam;
+}
+
+// The side camera of `cam`: orthographic, looking along cam.r (from the viewer's left).
+inline Camera side_camera(const Camera& cam)
+{
+  Camera s;
+  s.perspective = false;
+  s.eye = cam.eye;
+  s.f = cam.r;
+  s.r = -cam.f;
+  s.u = cam.u;
+  return s;
+}
+
+struct Edge_set
+{
+  std::string label, color;
+  std::vector<std::uint32_t> halfedges;
+  double width = 1.0;
+};
+
+// One panel per edge set per camera, in a grid (cameras are rows).
+inline void write_svg(const std::string& path, const Simplifier& s, const std::vector<Camera>& cams,
+                      const std::vector<std::string>& cam_names, const std::vector<Edge_set>& sets,
+                      const std::string& title)
+{
+  const double W = 360, H = 360, margin = 14, top = 40, label = 22;
+  std::ofstream out(path);
+  if(!out) throw std::runtime_error("cannot write " + path);
+  const double width = sets.size() * W, height = top + cams.size() * (H + label);
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
+      << width << " " << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+      << "<text x=\"10\" y=\"24\" font-family=\"sans-serif\" font-size=\"16\">" << title << "</text>\n";
+  const auto& fine = s.fine();
+  for(std::size_t ci = 0; ci < cams.size(); ++ci) {
+    // Fit the projected fine vertices.
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for(const Point_3& p : fine.points) {
+      const auto q = cams[ci].project(p);
+      for(int k = 0; k < 2; ++k) { lo[k] = std::min(lo[k], q[k]); hi[k] = std::max(hi[k], q[k]); }
+    }
+    const double scale = std::min((W - 2 * margin) / std::max(hi[0] - lo[0], 1e-300), (H - 2 * margin) / std::max(hi[1] - lo[1], 1e-300));
+    for(std::size_t si = 0; si < sets.size(); ++si) {
+      const double x0 = si * W, y0 = top + ci * (H + label);
+      out << "<rect x=\"" << x0 + 2 << "\" y=\"" << y0 << "\" width=\"" << W - 4 << "\" height=\"" << H
+          << "\" fill=\"none\" stroke=\"#ddd\"/>\n";
+      out << "<text x=\"" << x0 + 8 << "\" y=\"" << y0 + H + 16 << "\" font-family=\"sans-serif\" font-size=\"13\">"
+          << cam_names[ci] << ": " << sets[si].label << "</text>\n";
+      const bool coarse = sets[si].label.rfind("coarse", 0) == 0;
+      const auto& m = coarse ? s.coarse() : fine;
+      out << "<path fill=\"none\" stroke=\"" << sets[si].color << "\" stroke-width=\"" << sets[si].width
+          << "\" stroke-linecap=\"round\" d=\"";
+      out << std::fixed << std::setprecision(1);
+      for(std::uint32_t h : sets[si].halfedges) {
+        const auto a = cams[ci].project(m.points[m.source[h]]), b = cams[ci].project(m.points[m.target(h)]);
+        out << "M" << x0 + margin + (a[0] - lo[0]) * scale << " " << y0 + H - margin - (a[1] - lo[1]) * scale << "L"
+            << x0 + margin + (b[0] - lo[0]) * scale << " " << y0 + H - margin - (b[1] - lo[1]) * scale;
+      }
+      out << std::defaultfloat << std::setprecision(6);
+      out << "\"/>\n";
+    }
+  }
+  out << "</svg>\n";
+}
+
+struct Run_summary
+{
+  std::size_t fine_faces = 0, coarse_faces = 0, fine_edges = 0, coarse_edges = 0, picked_edges = 0, mapped_edges = 0;
+  std::size_t fine_loops = 0, coarse_loops = 0, picked_loops = 0, mapped_loops = 0;
+  double preprocess_s = 0, extract_ms = 0, picking_ms = 0, mapping_ms = 0;
+  double incoherence[4] = {-1, -1, -1, -1}; // picking, picking+remedy, mapping, mapping+remedy
+  bool consistent = true;
+  std::string problems;
+};
+
+struct Run_parameters
+{
+  std::size_t coarse_faces = 1000;
+  double alpha = 0.1, azimuth = 30, elevation = 20, remedy_bias = 0.5;
+  int up = 1;
+  bool picking = true, mapping = true, orthographic = false;
+  long frames = 0;
+  std::string name = "mesh";
+};
+
+inline double ms_since(std::chrono::steady_clock::time_point t0) { return 1e3 * seconds_since(t0); }
+
+// Checks that loops are closed chains of real fine edges; picked edges lie on the fine silhouette.
+inline void check_frame(const Simplifier& s, const SS::Silhouette_frame& frame, Run_summary& sum)
+{
+  auto fail = [&](const std::string& what) { sum.consistent = false; if(sum.problems.empty()) sum.problems = what; };
+  for(const auto* loops : {&frame.fine_loops, &frame.coarse_loops, &frame.mapped}) {
+    const auto& m = loops == &frame.coarse_loops ? s.coarse() : s.fine();
+    for(const auto& l : *loops) {
+      if(!l.closed) fail("an open loop");
+      for(std::size_t i = 0; i < l.halfedges.size(); ++i)
+        if(l.halfedges[i] >= m.number_of_halfedges() || m.target(l.halfedges[i]) != m.source[l.halfedges[(i + 1) % l.halfedges.size()]])
+          fail("a loop that is not a chain of mesh edges");
+    }
+  }
+  std::vector<char> on(s.fine().number_of_halfedges(), 0);
+  for(std::uint32_t h : frame.fine_silhouette) on[h] = 1;
+  for(std::uint32_t h : frame.picked_halfedges())
+    if(!on[h]) fail("a picked edge off the fine silhouette");
+}
+
+// Runs one view (and optionally a rotation) and writes the pictures into `folder`.
+inline Run_summary run(const Mesh& fine, const Run_parameters& p, const std::filesystem::path& folder, Progress_bar& progress,
+                       bool quiet)
+{
+  Run_summary sum;
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(fine);
+  auto t0 = std::chrono::steady_clock::now();
+  SS::Coarse_mesh_options co;
+  co.target_faces = p.coarse_faces;
+  const auto coarse = SS::build_coarse_mesh(fine, get(CGAL::vertex_point, fine), co, std::ref(progress));
+  Simplifier s(fine, coarse.mesh, coarse.coarse_face_of_fine_face);
+  sum.preprocess_s = seconds_since(t0);
+  sum.fine_faces = num_faces(fine);
+  sum.coarse_faces = num_faces(coarse.mesh);
+
+  SS::Loop_mapping_options mo;
+  mo.alpha = p.alpha;
+  Camera cam = orbit_camera(box, p.azimuth, p.elevation, p.up);
+  cam.perspective = !p.orthographic;
+  auto view_of = [&](const Camera& c) { return p.orthographic ? View::orthographic(c.f) : View::perspective(c.eye); };
+  SS::Silhouette_frame frame;
+  t0 = std::chrono::steady_clock::now();
+  s.extract(view_of(cam), frame);
+  sum.extract_ms = ms_since(t0);
+  if(p.picking) { t0 = std::chrono::steady_clock::now(); s.pick_loops(frame); sum.picking_ms = ms_since(t0); }
+  if(p.mapping) { t0 = std::chrono::steady_clock::now(); s.map_loops(frame, mo); sum.mapping_ms = ms_since(t0); }
+  check_frame(s, frame, sum);
+  sum.fine_edges = frame.fine_silhouette.size();
+  sum.coarse_edges = frame.coarse_silhouette.size();
+  sum.picked_edges = frame.picked_halfedges().size();
+  sum.mapped_edges = frame.mapped_halfedges().size();
+  sum.fine_loops = frame.fine_loops.size();
+  sum.coarse_loops = frame.coarse_loops.size();
+  sum.picked_loops = frame.picked.size();
+  sum.mapped_loops = frame.mapped.size();
+
+  std::vector<Edge_set> sets;
+  sets.push_back({"fine silhouette, " + std::to_string(sum.fine_edges) + " edges", "#444", frame.fine_silhouette, 0.8});
+  sets.push_back({"coarse silhouette, " + std::to_string(sum.coarse_edges) + " edges", "#1f77b4", frame.coarse_silhouette, 1.2});
+  if(p.picking) sets.push_back({"picked (A), " + std::to_string(sum.picked_edges) + " edges", "#2ca02c", frame.picked_halfedges(), 1.0});
+  if(p.mapping) sets.push_back({"mapped (B), " + std::to_string(sum.mapped_edges) + " edges", "#d62728", frame.mapped_halfedges(), 1.0});
+  const std::string svg = (folder / "silhouette.svg").string();
+  write_svg(svg, s, {cam, side_camera(cam)}, {"front", "side"}, sets,
+            p.name + ": " + std::to_string(sum.fine_faces) + " faces, coarse " + std::to_string(sum.coarse_faces) + " faces");
+  svg_to_png(svg);
+
+  if(p.frames > 1) {
+    std::ofstream csv((folder / "frames.csv").string());
+    csv << "frame,azimuth_deg,fine_edges,picked_edges,mapped_edges\n";
+    // Picture sequence with the chosen methods.
+    SS::Silhouette_frame prev, cur;
+    for(long t = 0; t < p.frames; ++t) {
+      if(!progress("rotation", double(t) / double(p.frames))) throw CGAL::MDCS::Operation_cancelled("rotation");
+      const double az = p.azimuth + 360.0 * double(t) / double(p.frames);
+      Camera c = orbit_camera(box, az, p.elevation, p.up);
+      c.perspective = !p.orthographic;
+      s.extract(view_of(c), cur);
+      if(p.picking) s.pick_loops(cur);
+      if(p.mapping) s.map_loops(cur, mo);
+      check_frame(s, cur, sum);
+      std::vector<Edge_set> fs = {{"fine, " + std::to_string(cur.fine_silhouette.size()) + " edges", "#444", cur.fine_silhouette, 0.8}};
+      if(p.picking) fs.push_back({"picked, " + std::to_string(cur.picked_halfedges().size()) + " edges", "#2ca02c", cur.picked_halfedges(), 1.0});
+      if(p.mapping) fs.push_back({"mapped, " + std::to_string(cur.mapped_halfedges().size()) + " edges", "#d62728", cur.mapped_halfedges(), 1.0});
+      std::ostringstream name;
+      name << "frame_" << std::setw(3) << std::setfill('0') << t << ".svg";
+      write_svg((folder / name.str()).string(), s, {c}, {"front"}, fs, p.name + ", azimuth " + std::to_string(int(az)) + " deg");
+      csv << t << "," << az << "," << cur.fine_silhouette.size() << "," << cur.picked_halfedges().size() << ","
+          << cur.mapped_halfedges().size() << "\n";
+    }
+    progress("rotation", 1.0);
+    // Temporal coherence over small steps (0.5 degree), both methods, with and without the remedy.
+    for(int variant = 0; variant < 4; ++variant) {
+      const bool mapping = variant >= 2, remedy = variant % 2 == 1;
+      if((mapping && !p.mapping) || (!mapping && !p.picking)) continue;
+      std::vector<std::vector<std::uint32_t>> fsets, ssets;
+      SS::Loop_picking_options po;
+      SS::Loop_mapping_options m2 = mo;
+      if(remedy) { po.previous_bias = p.remedy_bias; m2.previous_bias = p.remedy_bias; }
+      for(long t = 0; t < 40; ++t) {
+        s.extract(view_of(orbit_camera(box, p.azimuth + 0.5 * double(t), p.elevation, p.up)), cur);
+        if(mapping) s.map_loops(cur, m2, t > 0 ? &prev : nullptr);
+        else s.pick_loops(cur, po, t > 0 ? &prev : nullptr);
+        std::vector<std::uint32_t> f, e;
+        for(std::uint32_t h : cur.fine_silhouette) f.push_back(s.fine().edge(h));
+        for(std::uint32_t h : mapping ? cur.mapped_halfedges() : cur.picked_halfedges()) e.push_back(s.fine().edge(h));
+        fsets.push_back(f);
+        ssets.push_back(e);
+        std::swap(prev, cur);
+      }
+      sum.incoherence[variant] = SS::temporal_incoherence(ssets, fsets);
+    }
+  }
+  if(!quiet) {
+    std::cout << p.name << ": fine " << sum.fine_faces << " faces, coarse " << sum.coarse_faces << " faces (preprocessing "
+              << std::setprecision(3) << sum.preprocess_s << " s)\n"
+              << "  silhouette: fine " << sum.fine_edges << " edges in " << sum.fine_loops << " loops, coarse " << sum.coarse_edges
+              << " edges in " << sum.coarse_loops << " loops (extraction + decomposition " << sum.extract_ms << " ms)\n";
+    if(p.picking) std::cout << "  loop picking: " << sum.picked_loops << " loops, " << sum.picked_edges << " edges, " << sum.picking_ms << " ms\n";
+    if(p.mapping) std::cout << "  loop mapping: " << sum.mapped_loops << " loops, " << sum.mapped_edges << " edges, " << sum.mapping_ms << " ms\n";
+    if(p.frames > 1) {
+      std::cout << "  temporal incoherence (simplified change / true change, 40 steps of 0.5 deg):";
+      const char* names[4] = {"picking", "picking+remedy", "mapping", "mapping+remedy"};
+      for(int v = 0; v < 4; ++v)
+        if(sum.incoherence[v] >= 0) std::cout << " " << names[v] << " " << sum.incoherence[v];
+      std::cout << "\n";
+    }
+    std::cout << "  pictures: " << svg << (p.frames > 1 ? " and frame_*.svg" : "") << "\n";
+    if(!sum.consistent) std::cout << "  CONSISTENCY CHECK FAILED: " << sum.problems << "\n";
+  }
+  return sum;
+}
+
+inline Mesh read_triangle_mesh(const std::string& path)
+{
+  Mesh m;
+  if(!CGAL::IO::read_polygon_mesh(path, m) || num_faces(m) == 0)
+    throw Input_error("cannot read a polygon mesh from '" + path + "'");
+  if(!CGAL::is_triangle_mesh(m)) throw Input_error("'" + path + "' is not a triangle mesh");
+  return m;
+}
+
+// A bumpy closed surface for machines without CGAL's demo meshes: a subdivided icosahedron with radial noise.
+inline Mesh generated_mesh(int levels)
+{
+  Mesh m;
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Point_3> p = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                            {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<std::array<std::size_t, 3>> f = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                               {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                                               {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for(int l = 0; l < levels; ++l) {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
+    auto m_ = [&](std::size_t a, std::size_t b) {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto it = mid.find(key);
+      if(it != mid.end()) return it->second;
+      p.push_back(CGAL::midpoint(p[a], p[b]));
+      return mid[key] = p.size() - 1;
+    };
+    std::vector<std::array<std::size_t, 3>> g;
+    for(const auto& x : f) {
+      const std::size_t ab = m_(x[0], x[1]), bc = m_(x[1], x[2]), ca = m_(x[2], x[0]);
+      g.push_back({x[0], ab, ca}); g.push_back({x[1], bc, ab}); g.push_back({x[2], ca, bc}); g.push_back({ab, bc, ca});
+    }
+    f.swap(g);
+  }
+  std::vector<Mesh::Vertex_index> v;
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    const double x = CGAL::to_double(p[i].x()), y = CGAL::to_double(p[i].y()), z = CGAL::to_double(p[i].z());
+    const double n = std::sqrt(x * x + y * y + z * z);
+    const double r = 1 + 0.15 * std::sin(5 * x) * std::sin(4 * y) * std::sin(3 * z + 1) + 0.03 * std::sin(23 * x + 17 * y);
+    v.push_back(m.add_vertex(Point_3(r * x / n, r * y / n, r * z / n)));
+  }
+  for(const auto& x : f) m.add_face(v[x[0]], v[x[1]], v[x[2]]);
+  return m;
+}
+
+} // namespace sil_detail
+
+// Names of the options of `mdcs silhouette` that take no value.
+inline std::vector<std::string> silhouette_flags() { return {"orthographic", "quiet", "help"}; }
+
+inline const char* silhouette_usage()
+{
+  return "usage: mdcs silhouette MESH [--view AZIMUTH,ELEVATION] [--orthographic] [--up x|y|z] [--method picking|mapping|both]\n"
+         "                        [--coarse-faces N] [--alpha A] [--frames N] [--output DIR] [--quiet]\n"
+         "  Simplified silhouette of a triangle mesh (thesis chapter 5). A coarse mesh (half-edge collapses,\n"
+         "  smoothing) guides the choice of fine silhouette loops (picking, method A) or the minimal-weight\n"
+         "  loops of fine edges that follow the coarse silhouette loops (mapping, method B, min cut).\n"
+         "  --view A,E          perspective eye at azimuth A and elevation E degrees, 2.5 diagonals away (30,20)\n"
+         "  --up x|y|z          the up axis of the orbit (y)\n"
+         "  --orthographic      orthographic view along the same direction instead of the perspective eye\n"
+         "  --method M          picking, mapping or both (both)\n"
+         "  --coarse-faces N    faces of the coarse mesh (1000)\n"
+         "  --alpha A           weight factor of fine silhouette edges in loop mapping, in (0,1] (0.1)\n"
+         "  --frames N          also a rotation of N frames (frame_NNN.svg, frames.csv) and the temporal-coherence\n"
+         "                      metric with and without the previous-frame remedy\n"
+         "  --output DIR        output folder (silhouette_out)\n"
+         "  Writes DIR/silhouette.svg (front and side views: fine, coarse, picked, mapped, with edge counts).\n";
+}
 
 inline int command_silhouette(const Options& o)
 {
-  (void)o;
-  throw std::runtime_error("mdcs silhouette is not available yet");
+  if(o.has("help")) { std::cout << silhouette_usage(); return EXIT_OK; }
+  using namespace sil_detail;
+  if(o.positional().size() != 1) throw Usage_error("expected one mesh file");
+  Run_parameters p;
+  const std::string view = o.text("view", "30,20");
+  {
+    const auto comma = view.find(',');
+    char* end = nullptr;
+    if(comma == std::string::npos) throw Usage_error("--view expects AZIMUTH,ELEVATION in degrees");
+    p.azimuth = std::strtod(view.substr(0, comma).c_str(), &end);
+    p.elevation = std::strtod(view.substr(comma + 1).c_str(), &end);
+    if(!std::isfinite(p.azimuth) || !std::isfinite(p.elevation) || std::abs(p.elevation) >= 90)
+      throw Usage_error("--view: the elevation must be in (-90, 90)");
+  }
+  const std::string up = o.text("up", "y");
+  if(up != "x" && up != "y" && up != "z") throw Usage_error("--up must be x, y or z");
+  p.up = up == "x" ? 0 : up == "y" ? 1 : 2;
+  const std::string method = o.text("method", "both");
+  if(method != "picking" && method != "mapping" && method != "both") throw Usage_error("--method must be picking, mapping or both");
+  p.picking = method != "mapping";
+  p.mapping = method != "picking";
+  p.coarse_faces = std::size_t(o.integer("coarse-faces", 1000, 4));
+  p.alpha = o.number("alpha", 0.1);
+  if(!(p.alpha > 0 && p.alpha <= 1)) throw Usage_error("--alpha must be in (0, 1]");
+  p.frames = o.integer("frames", 0, 0);
+  const std::string out = o.text("output", "silhouette_out");
+  const bool quiet = o.has("quiet");
+  o.text("quiet", "");
+  p.orthographic = o.has("orthographic");
+  o.text("orthographic", "");
+  o.reject_unknown();
+  const std::string path = o.positional()[0];
+  p.name = std::filesystem::path(path).filename().string();
+  const Mesh fine = read_triangle_mesh(path);
+  const auto folder = prepare_output_folder(out);
+  Progress_bar progress(quiet);
+  const Run_summary sum = run(fine, p, folder, progress, quiet);
+  return sum.consistent ? EXIT_OK : EXIT_FAILURE_RUNTIME;
 }
 
 // Part of `mdcs demo`: writes its pictures and files into folder, appends a section to the summary md;
 // returns false when one of its consistency checks failed.
 inline bool demo_silhouette(const std::filesystem::path& folder, bool quick, bool quiet, Progress_bar& progress, std::ostream& md)
 {
-  (void)folder; (void)quick; (void)quiet; (void)progress; (void)md;
-  return true;
+  using namespace sil_detail;
+  const std::string dir = MDCS_CGAL_MESH_DIR;
+  Mesh fine;
+  Run_parameters p;
+  bool generated = false;
+  const std::string name = quick ? "elephant.off" : "bunny00.off";
+  if(!dir.empty() && CGAL::IO::read_polygon_mesh(dir + "/" + name, fine) && num_faces(fine) > 0 && CGAL::is_triangle_mesh(fine)) {
+    p.name = name;
+    if(!quick) {
+      // The thesis's setting: a 20,000-face bunny and a 1,000-face coarse mesh.
+      SS::Coarse_mesh_options o;
+      o.target_faces = 20000;
+      o.smoothing_iterations = 0;
+      fine = SS::build_coarse_mesh(fine, o).mesh;
+      p.name = "bunny00.off simplified to 20k faces";
+    }
+  } else {
+    fine = generated_mesh(quick ? 4 : 5);
+    p.name = "generated bumpy sphere";
+    generated = true;
+  }
+  p.coarse_faces = quick ? 500 : 1000;
+  p.frames = quick ? 0 : 12;
+  p.up = 1;
+  const auto sub = folder / "silhouette";
+  prepare_output_folder(sub.string());
+  if(!quiet) std::cout << "== silhouette simplification\n";
+  const Run_summary s = run(fine, p, sub, progress, quiet);
+  md << "\n## Simplified silhouettes\n\n"
+     << p.name << (generated ? " (CGAL's meshes are not installed, so a generated surface is used)" : "") << ": "
+     << s.fine_faces << " faces, coarse mesh " << s.coarse_faces << " faces (preprocessing " << std::setprecision(3)
+     << s.preprocess_s << " s). One view ([silhouette/silhouette.svg](silhouette/silhouette.svg)):\n\n"
+     << "| silhouette | edges | loops | time (ms) |\n|---|---:|---:|---:|\n"
+     << "| fine | " << s.fine_edges << " | " << s.fine_loops << " | " << s.extract_ms << " (both meshes) |\n"
+     << "| coarse | " << s.coarse_edges << " | " << s.coarse_loops << " | |\n"
+     << "| loop picking (A) | " << s.picked_edges << " | " << s.picked_loops << " | " << s.picking_ms << " |\n"
+     << "| loop mapping (B, min cut) | " << s.mapped_edges << " | " << s.mapped_loops << " | " << s.mapping_ms << " |\n";
+  if(p.frames > 1)
+    md << "\nRotation: " << p.frames << " frames (`silhouette/frame_*.svg`). Temporal incoherence (change of the simplified "
+       << "silhouette / change of the true one, 0.5 degree steps): picking " << s.incoherence[0] << " (with the previous-frame "
+       << "bias " << s.incoherence[1] << "), mapping " << s.incoherence[2] << " (with the bias " << s.incoherence[3] << ").\n";
+  md << "\nChecks: every loop closed and made of mesh edges, picked edges on the fine silhouette: "
+     << (s.consistent ? "passed" : "FAILED (" + s.problems + ")") << ".\n";
+  return s.consistent;
 }
 
 } // namespace mdcs_cli
