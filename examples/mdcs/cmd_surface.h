@@ -1,34 +1,454 @@
-// `mdcs surface`: Globally minimal surfaces of bivariate variational problems (issue 6).
-// SKELETON: the sub-command is wired into mdcs.cpp and cmd_demo.h; its implementation is being written.
+// `mdcs surface`: globally minimal discrete surfaces of bivariate variational problems (thesis ch. 2.6.2-2.7).
 #ifndef MDCS_CLI_CMD_SURFACE_H
 #define MDCS_CLI_CMD_SURFACE_H
 
 #include "cli_common.h"
 
+#include <CGAL/Min_cut/solve_min_cut.h>
+#include <CGAL/Variational_minimization/Minimal_surface_3.h>
+#include <CGAL/Variational_minimization/Plane_arrangement_3.h>
+#include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/relax_surface_3.h>
+#include <CGAL/Variational_minimization/select_planes_3.h>
+#include <CGAL/Variational_minimization/surface_facet_weights_3.h>
+#include <CGAL/Variational_minimization/surface_functionals_3.h>
+#include <CGAL/Variational_minimization/surface_planes_3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace mdcs_cli {
 
-// Names of the options of `mdcs surface` that take no value.
-inline std::vector<std::string> surface_flags() { return {"quiet", "help"}; }
+namespace VM3 = CGAL::Variational_minimization;
 
-inline const char* surface_usage() { return "usage: mdcs surface ...   (not available yet)\n"; }
+// Names of the options of `mdcs surface` that take no value.
+inline std::vector<std::string> surface_flags() { return {"quiet", "help", "relax"}; }
+
+inline const char* surface_usage()
+{
+  return
+    "usage: mdcs surface [options]\n"
+    "Minimise F(f) = double integral of G(f, f_x, f_y, x, y) globally over the functions made of facets of a random\n"
+    "plane arrangement (BSP cell complex, exact predicates), by a min-cut of the directed dual graph of its cells;\n"
+    "write the surface (PLY) and a height-coloured picture (SVG, PNG where rsvg-convert exists).\n"
+    "  --problem NAME      saddle (area, boundary f = x y on [-1,1]^2; default) | membrane (heavy membrane on a\n"
+    "                      wavy rim) | blobs (area weighted by a density with wells: many local minima, boundary\n"
+    "                      free in [0,1]) | scherk (area, f = ln(cos y / cos x) on [-1.2,1.2]^2; exact area known)\n"
+    "  --planes N          planes per arrangement (default 150)\n"
+    "  --segments S        boundary segments per side of the domain (default 4)\n"
+    "  --distribution D    slope (slope-limited, default) | isotropic\n"
+    "  --max-slope S       slope bound of slope-limited planes (default 3)\n"
+    "  --pencil-fraction F share of the planes through the boundary segments (default 0.2)\n"
+    "  --plane-selection K plane selection with K iterations (default 1: a single solve)\n"
+    "  --relax             continue with local relaxation on 20^2, 40^2, 80^2 grids (L-BFGS)\n"
+    "  --engine pf|pr|bk   max-flow engine: pseudoflow (default), push-relabel, Boykov-Kolmogorov\n"
+    "  --seed S            random seed (default 1)\n"
+    "  --output DIR        output folder (default mdcs-output); files NAME.ply/.svg/.png/_summary.txt\n"
+    "  --name NAME         base name of the output files (default: the problem name)\n"
+    "  --quiet             no progress bar\n";
+}
+
+struct Surface_settings
+{
+  std::string problem = "saddle";
+  long planes = 150;
+  long segments = 4;
+  std::string distribution = "slope";
+  double max_slope = 3;
+  double pencil_fraction = 0.2;
+  long plane_selection = 1;
+  bool relax = false;
+  std::string engine = "pf";
+  long seed = 1;
+  std::string output = "mdcs-output";
+  std::string name;
+  bool quiet = false;
+};
+
+struct Surface_run
+{
+  VM3::Surface_problem_3 problem;
+  VM3::Minimal_surface_3 surface;
+  VM3::Relaxed_surface_3 relaxed;
+  bool has_relaxed = false;
+  std::vector<double> selection_energies;
+  double exact = NAN;
+  std::size_t cells = 0, facets = 0, vertices = 0, pencils = 0;
+  double seconds_build = 0, seconds_weights = 0, seconds_cut = 0, seconds_relax = 0, seconds_total = 0;
+  std::string ply, svg, summary;
+};
+
+// Area of Scherk's surface over [-a, a]^2 by Gauss-Legendre quadrature.
+inline double scherk_area_cli(double a)
+{
+  static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831, 0.9061798459386640};
+  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                              0.2369268850561891};
+  const int m = 80;
+  const double h = 2 * a / m;
+  double sum = 0;
+  for(int i = 0; i < m; ++i)
+    for(int j = 0; j < m; ++j)
+      for(int k = 0; k < 5; ++k)
+        for(int l = 0; l < 5; ++l) {
+          const double u = -a + h * (i + 0.5 + 0.5 * x[k]), v = -a + h * (j + 0.5 + 0.5 * x[l]);
+          sum += w[k] * w[l] * std::sqrt(1 + std::tan(u) * std::tan(u) + std::tan(v) * std::tan(v));
+        }
+  return sum * h * h / 4;
+}
+
+// An oblique view of a triangulated surface, painter's order, coloured by height and shaded; the boundary in red.
+inline void write_surface_svg(const std::string& path, const VM3::Minimal_surface_3& s, const VM3::Surface_problem_3& p,
+                              const std::string& title, const std::vector<std::string>& caption)
+{
+  const double az = 0.6, el = 0.55;
+  const double sx = p.domain.xmax() - p.domain.xmin(), sy = p.domain.ymax() - p.domain.ymin(), sz = p.zmax - p.zmin;
+  auto norm = [&](const std::array<double, 3>& q) {
+    return std::array<double, 3>{{(q[0] - p.domain.xmin()) / sx - 0.5, (q[1] - p.domain.ymin()) / sy - 0.5,
+                                  (q[2] - p.zmin) / sz * 0.7 - 0.35}};
+  };
+  auto project = [&](const std::array<double, 3>& q, double& u, double& v, double& depth) {
+    const auto n = norm(q);
+    const double a = std::cos(az) * n[0] - std::sin(az) * n[1];
+    const double b = std::sin(az) * n[0] + std::cos(az) * n[1];
+    u = 400 + 420 * a;
+    v = 380 - 420 * (n[2] * std::cos(el) + b * std::sin(el));
+    depth = b * std::cos(el) - n[2] * std::sin(el);
+  };
+  struct Tri { double depth; std::string svg; };
+  std::vector<Tri> tris;
+  for(const auto& t : s.triangles) {
+    double u[3], v[3], d[3];
+    double zc = 0;
+    for(int k = 0; k < 3; ++k) {
+      project(s.points[t[k]], u[k], v[k], d[k]);
+      zc += s.points[t[k]][2] / 3;
+    }
+    // Height colour (blue -> green -> yellow) and Lambert shading from the normal in normalised coordinates.
+    const auto a = norm(s.points[t[0]]), b = norm(s.points[t[1]]), c = norm(s.points[t[2]]);
+    double nx = (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]);
+    double ny = (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]);
+    double nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+    if(len == 0) continue;
+    if(nz < 0) { nx = -nx; ny = -ny; nz = -nz; }
+    const double shade = 0.55 + 0.45 * std::max(0.0, (-0.4 * nx - 0.3 * ny + 0.87 * nz) / len);
+    const double h = std::min(1.0, std::max(0.0, (zc - p.zmin) / sz));
+    const double r = (h < 0.5 ? 0.15 + 0.3 * h : 0.3 + 1.3 * (h - 0.5)) , g = 0.25 + 0.6 * h, bl = 0.65 - 0.5 * h;
+    auto c255 = [&](double x) { return int(std::min(255.0, std::max(0.0, 255 * x * shade))); };
+    std::ostringstream o;
+    o << std::fixed << std::setprecision(1) << "<polygon points='" << u[0] << ',' << v[0] << ' ' << u[1] << ','
+      << v[1] << ' ' << u[2] << ',' << v[2] << "' fill='rgb(" << c255(r) << ',' << c255(g) << ',' << c255(bl)
+      << ")' stroke='rgb(" << c255(r * 0.9) << ',' << c255(g * 0.9) << ',' << c255(bl * 0.9)
+      << ")' stroke-width='0.25'/>\n";
+    tris.push_back({(d[0] + d[1] + d[2]) / 3, o.str()});
+  }
+  std::sort(tris.begin(), tris.end(), [](const Tri& a, const Tri& b) { return a.depth > b.depth; });
+  std::ofstream out(path);
+  if(!out) throw std::runtime_error("cannot write " + path);
+  out << "<svg xmlns='http://www.w3.org/2000/svg' width='800' height='" << 700 + 18 * caption.size()
+      << "' viewBox='0 0 800 " << 700 + 18 * caption.size() << "'>\n<rect width='100%' height='100%' fill='white'/>\n";
+  out << "<text x='20' y='28' font-family='sans-serif' font-size='18'>" << title << "</text>\n";
+  // The box's floor outline, then the surface, then the boundary curve.
+  {
+    const std::array<double, 3> corners[4] = {{{p.domain.xmin(), p.domain.ymin(), p.zmin}},
+                                              {{p.domain.xmax(), p.domain.ymin(), p.zmin}},
+                                              {{p.domain.xmax(), p.domain.ymax(), p.zmin}},
+                                              {{p.domain.xmin(), p.domain.ymax(), p.zmin}}};
+    out << "<polygon fill='none' stroke='#bbb' stroke-dasharray='4,3' points='";
+    for(const auto& c : corners) {
+      double u, v, d;
+      project(c, u, v, d);
+      out << u << ',' << v << ' ';
+    }
+    out << "'/>\n";
+  }
+  for(const Tri& t : tris) out << t.svg;
+  {
+    out << "<polyline fill='none' stroke='#d62728' stroke-width='2' points='";
+    const int m = 400;
+    for(int i = 0; i <= m; ++i) {
+      const double t = 4.0 * i / m;
+      const int side = std::min(3, int(t));
+      const double f = t - side;
+      double x, y;
+      if(side == 0) { x = p.domain.xmin() + f * sx; y = p.domain.ymin(); }
+      else if(side == 1) { x = p.domain.xmax(); y = p.domain.ymin() + f * sy; }
+      else if(side == 2) { x = p.domain.xmax() - f * sx; y = p.domain.ymax(); }
+      else { x = p.domain.xmin(); y = p.domain.ymax() - f * sy; }
+      const double z = p.is_relaxed() ? p.zmin : p.lower_boundary(x, y);
+      if(p.is_relaxed()) break;
+      double u, v, d;
+      project({{x, y, z}}, u, v, d);
+      out << u << ',' << v << ' ';
+    }
+    out << "'/>\n";
+  }
+  for(std::size_t i = 0; i < caption.size(); ++i)
+    out << "<text x='20' y='" << 700 + 18 * i << "' font-family='sans-serif' font-size='13'>" << caption[i] << "</text>\n";
+  out << "</svg>\n";
+}
+
+inline Surface_settings parse_surface_settings(const Options& o)
+{
+  Surface_settings s;
+  s.problem = o.text("problem", s.problem);
+  if(s.problem != "saddle" && s.problem != "membrane" && s.problem != "blobs" && s.problem != "scherk")
+    throw Usage_error("--problem must be saddle, membrane, blobs or scherk");
+  s.planes = o.integer("planes", s.planes, 1);
+  s.segments = o.integer("segments", s.segments, 1);
+  if(s.segments > 256) throw Usage_error("--segments must be <= 256");
+  s.distribution = o.text("distribution", s.distribution);
+  if(s.distribution != "slope" && s.distribution != "isotropic")
+    throw Usage_error("--distribution must be slope or isotropic");
+  s.max_slope = o.number("max-slope", s.max_slope);
+  if(!(s.max_slope > 0)) throw Usage_error("--max-slope must be > 0");
+  s.pencil_fraction = o.number("pencil-fraction", s.pencil_fraction);
+  if(!(s.pencil_fraction >= 0 && s.pencil_fraction <= 1)) throw Usage_error("--pencil-fraction must be in [0, 1]");
+  s.plane_selection = o.integer("plane-selection", s.plane_selection, 1);
+  s.relax = o.has("relax");
+  o.text("relax", "");
+  s.engine = o.text("engine", s.engine);
+  if(s.engine != "pf" && s.engine != "pr" && s.engine != "bk") throw Usage_error("--engine must be pf, pr or bk");
+  s.seed = o.integer("seed", s.seed, 0);
+  s.output = o.text("output", s.output);
+  s.name = o.text("name", s.problem);
+  s.quiet = o.has("quiet");
+  o.text("quiet", "");
+  return s;
+}
+
+inline VM3::Surface_problem_3 surface_problem_for(const std::string& name, int segments)
+{
+  VM3::Surface_problem_3 P;
+  P.boundary_segments_per_side = segments;
+  if(name == "saddle") {
+    P.domain = CGAL::Bbox_2(-1, -1, 1, 1);
+    P.zmin = -1.1;
+    P.zmax = 1.1;
+    P.lower_boundary = [](double x, double y) { return x * y; };
+  } else if(name == "membrane") {
+    P.lower_boundary = [](double x, double y) { return 0.8 + 0.08 * std::sin(2 * M_PI * x) * std::cos(M_PI * y); };
+  } else if(name == "blobs") {
+    P.lower_boundary = [](double, double) { return 0.0; };
+    P.upper_boundary = [](double, double) { return 1.0; };
+  } else {
+    const double a = 1.2;
+    P.domain = CGAL::Bbox_2(-a, -a, a, a);
+    P.zmin = -1.1;
+    P.zmax = 1.1;
+    P.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
+  }
+  return P;
+}
+
+template <class Functional>
+void run_surface_with(const Surface_settings& s, const Functional& G, Surface_run& run, Progress_bar& progress)
+{
+  VM3::Surface_plane_options_3 po;
+  po.distribution = s.distribution == "slope" ? VM3::Plane_distribution_3::slope_limited
+                                              : VM3::Plane_distribution_3::isotropic;
+  po.max_slope = s.max_slope;
+  po.pencil_fraction = s.pencil_fraction;
+  po.seed = std::uint64_t(s.seed);
+  run.pencils = VM3::surface_pencil_count_3(run.problem, std::size_t(s.planes), po);
+  auto solve_once = [&](auto engine) {
+    if(s.plane_selection > 1) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const VM3::Plane_selection_result_3 r =
+        VM3::select_planes_3(run.problem, G, std::size_t(s.planes), int(s.plane_selection), po, 1, engine,
+                             std::ref(progress));
+      run.seconds_cut = seconds_since(t0);
+      run.surface = r.surface;
+      run.selection_energies = r.energies;
+      run.cells = r.cells.back();
+      const VM3::Plane_arrangement_3 A(r.planes);
+      run.facets = A.number_of_facets();
+      run.vertices = A.number_of_vertices();
+      return;
+    }
+    auto t0 = std::chrono::steady_clock::now();
+    const std::vector<VM3::Lattice_plane_3> planes = VM3::surface_planes_3(run.problem, std::size_t(s.planes), po);
+    const VM3::Plane_arrangement_3 A = VM3::build_surface_arrangement_3(run.problem, planes, std::ref(progress));
+    run.seconds_build = seconds_since(t0);
+    run.cells = A.number_of_cells();
+    run.facets = A.number_of_facets();
+    run.vertices = A.number_of_vertices();
+    t0 = std::chrono::steady_clock::now();
+    const std::vector<double> w = VM3::surface_facet_weights_3(A, run.problem, G, 1, std::ref(progress));
+    run.seconds_weights = seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
+    run.surface = VM3::minimize_surface_functional_3(A, w, run.problem, engine, std::ref(progress));
+    run.seconds_cut = seconds_since(t0);
+  };
+  if(s.engine == "pr") solve_once(CGAL::Min_cut::Push_relabel_max_flow());
+  else if(s.engine == "bk") solve_once(CGAL::Min_cut::Boykov_kolmogorov_max_flow());
+  else solve_once(CGAL::Min_cut::Pseudoflow_max_flow());
+  if(s.relax && run.surface.is_feasible) {
+    const auto t0 = std::chrono::steady_clock::now();
+    run.relaxed = VM3::relax_surface_3(run.problem, G, run.surface, VM3::Surface_relaxation_options_3(),
+                                       std::ref(progress));
+    run.has_relaxed = true;
+    run.seconds_relax = seconds_since(t0);
+  }
+}
+
+inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress)
+{
+  const auto t_start = std::chrono::steady_clock::now();
+  Surface_run run;
+  run.problem = surface_problem_for(s.problem, int(s.segments));
+  std::string functional;
+  if(s.problem == "membrane") {
+    VM3::Membrane_functional_3 G;
+    G.k_g = 1.5;
+    G.z_bottom = run.problem.zmin;
+    functional = "area + 1.5 f (heavy membrane)";
+    run_surface_with(s, G, run, progress);
+  } else if(s.problem == "blobs") {
+    const auto G = VM3::random_blob_functional_3(run.problem, 9, 2, 0.1, -1.5, std::uint64_t(s.seed) + 4);
+    functional = "density-weighted area, 9 x 2 wells";
+    run_surface_with(s, G, run, progress);
+  } else {
+    functional = "area";
+    run_surface_with(s, VM3::Area_functional_3(), run, progress);
+    if(s.problem == "scherk") run.exact = scherk_area_cli(1.2);
+  }
+  run.seconds_total = seconds_since(t_start);
+  const std::filesystem::path folder = prepare_output_folder(s.output);
+  std::ostringstream sum;
+  sum << std::setprecision(10);
+  sum << "problem           " << s.problem << " (" << functional << ")\n"
+      << "planes            " << s.planes << " (" << run.pencils << " through the boundary segments, "
+      << (s.distribution == "slope" ? "slope-limited |slope| <= " + (std::ostringstream() << s.max_slope).str()
+                                    : std::string("isotropic"))
+      << ", seed " << s.seed << ")\n"
+      << "complex           " << run.cells << " cells, " << run.facets << " facets, " << run.vertices << " vertices\n";
+  if(!run.surface.is_feasible) {
+    sum << "result            INFEASIBLE: no function on this arrangement meets the boundary condition\n";
+    run.summary = sum.str();
+    return run;
+  }
+  const double gap = std::abs(run.surface.energy - run.surface.solver_value) / run.surface.energy;
+  const double single = std::abs(run.surface.projected_area - run.problem.domain_area()) / run.problem.domain_area();
+  sum << "discrete energy   " << run.surface.energy << " (cut value " << run.surface.solver_value
+      << ", relative gap " << std::setprecision(2) << gap << ")\n" << std::setprecision(10)
+      << "single-valued     projected area / domain area - 1 = " << std::setprecision(2)
+      << (run.surface.projected_area / run.problem.domain_area() - 1) << (single <= 1e-9 ? " (yes)" : " (NO)") << "\n"
+      << std::setprecision(10) << "surface           " << run.surface.facets.size() << " facets on "
+      << run.surface.planes.size() << " planes, " << run.surface.triangles.size() << " triangles\n";
+  if(!run.selection_energies.empty()) {
+    sum << "plane selection   energies";
+    for(double e : run.selection_energies) sum << ' ' << e;
+    sum << "\n";
+  }
+  if(std::isfinite(run.exact))
+    sum << "exact area        " << run.exact << " (relative error " << std::setprecision(3)
+        << (run.surface.energy - run.exact) / run.exact << ")\n" << std::setprecision(10);
+  if(run.has_relaxed) {
+    sum << "relaxed energy    " << run.relaxed.energy << " on an " << run.relaxed.n << "^2 grid ("
+        << run.relaxed.iterations << " L-BFGS iterations)";
+    if(std::isfinite(run.exact))
+      sum << ", relative error " << std::setprecision(3) << (run.relaxed.energy - run.exact) / run.exact;
+    sum << "\n" << std::setprecision(10);
+  }
+  sum << std::setprecision(3) << "time              build " << run.seconds_build << " s, weights " << run.seconds_weights
+      << " s, cut " << run.seconds_cut << " s" << (run.has_relaxed ? ", relaxation " : "");
+  if(run.has_relaxed) sum << run.seconds_relax << " s";
+  sum << ", total " << run.seconds_total << " s\n";
+  run.ply = (folder / (s.name + ".ply")).string();
+  VM3::write_surface_ply(run.ply, run.surface);
+  const VM3::Minimal_surface_3& shown = run.has_relaxed ? VM3::grid_surface_mesh_3(run.problem, run.relaxed) : run.surface;
+  if(run.has_relaxed) VM3::write_surface_ply((folder / (s.name + "_relaxed.ply")).string(), shown);
+  run.svg = (folder / (s.name + ".svg")).string();
+  std::ostringstream cap1, cap2;
+  cap1 << std::setprecision(8) << run.cells << " cells from " << s.planes << " planes; discrete energy "
+       << run.surface.energy << (run.has_relaxed ? ", relaxed " : "");
+  if(run.has_relaxed) cap1 << run.relaxed.energy;
+  cap2 << (run.has_relaxed ? "relaxed surface shown (" + std::to_string(run.relaxed.n) + "^2 grid)" : "discrete surface shown")
+       << (run.problem.is_relaxed() ? "; boundary free in the band" : "; boundary curve in red");
+  write_surface_svg(run.svg, run.has_relaxed ? VM3::grid_surface_mesh_3(run.problem, run.relaxed) : run.surface,
+                    run.problem, "mdcs surface: " + s.problem, {cap1.str(), cap2.str()});
+  svg_to_png(run.svg);
+  sum << "files             " << run.ply << ", " << run.svg << "\n";
+  run.summary = sum.str();
+  std::ofstream((folder / (s.name + "_summary.txt")).string()) << run.summary;
+  return run;
+}
 
 inline int command_surface(const Options& o)
 {
-  (void)o;
-  throw std::runtime_error("mdcs surface is not available yet");
+  if(o.has("help")) {
+    std::cout << surface_usage();
+    return EXIT_OK;
+  }
+  const Surface_settings s = parse_surface_settings(o);
+  o.reject_unknown();
+  if(!o.positional().empty()) throw Usage_error("unexpected argument '" + o.positional().front() + "'");
+  Progress_bar progress(s.quiet);
+  const Surface_run run = run_surface(s, progress);
+  std::cout << run.summary;
+  return run.surface.is_feasible ? EXIT_OK : EXIT_INFEASIBLE;
 }
 
 // Part of `mdcs demo`: writes its pictures and files into folder, appends a section to the summary md;
 // returns false when one of its consistency checks failed.
 inline bool demo_surface(const std::filesystem::path& folder, bool quick, bool quiet, Progress_bar& progress, std::ostream& md)
 {
-  (void)folder; (void)quick; (void)quiet; (void)progress; (void)md;
-  return true;
+  bool ok = true;
+  md << "\n## Minimal surfaces (bivariate problems)\n\nEach surface is the min-cut of the directed dual graph of a random "
+        "plane arrangement (BSP complex with exact predicates); the cut value must equal the surface energy and the "
+        "surface must be single-valued over the domain.\n\n"
+        "| problem | planes | cells | discrete energy | cut gap | relaxed | exact | time (s) | picture |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  struct Demo { const char* problem; long planes; long selection; bool relax; };
+  const std::vector<Demo> runs = quick ? std::vector<Demo>{{"saddle", 60, 1, false}, {"scherk", 60, 1, true}}
+                                       : std::vector<Demo>{{"saddle", 120, 1, true}, {"membrane", 120, 1, false},
+                                                           {"scherk", 140, 1, true}, {"blobs", 90, 3, true}};
+  for(const Demo& d : runs) {
+    Surface_settings s;
+    s.problem = d.problem;
+    s.planes = d.planes;
+    s.plane_selection = d.selection;
+    s.relax = d.relax;
+    s.output = folder.string();
+    s.name = std::string("surface_") + d.problem;
+    s.quiet = quiet;
+    const Surface_run r = run_surface(s, progress);
+    std::cout << "== surface " << d.problem << "\n" << r.summary << "\n";
+    if(!r.surface.is_feasible) {
+      ok = false;
+      md << "| " << d.problem << " | " << d.planes << " | " << r.cells << " | INFEASIBLE | | | | | |\n";
+      continue;
+    }
+    const double gap = std::abs(r.surface.energy - r.surface.solver_value) / r.surface.energy;
+    const double single = std::abs(r.surface.projected_area - r.problem.domain_area()) / r.problem.domain_area();
+    if(gap > 1e-9 || single > 1e-9) ok = false;
+    std::ostringstream row;
+    row << std::setprecision(8) << "| " << d.problem << (d.selection > 1 ? " (plane selection x" + std::to_string(d.selection) + ")" : "")
+        << " | " << d.planes << " | " << r.cells << " | " << r.surface.energy << " | " << std::setprecision(2) << gap
+        << " | " << std::setprecision(8);
+    if(r.has_relaxed) row << r.relaxed.energy;
+    else row << "-";
+    row << " | ";
+    if(std::isfinite(r.exact)) row << r.exact;
+    else row << "-";
+    row << " | " << std::setprecision(3) << r.seconds_total << " | [" << s.name << ".svg](" << s.name << ".svg) |\n";
+    md << row.str();
+  }
+  (void)progress;
+  return ok;
 }
 
 } // namespace mdcs_cli

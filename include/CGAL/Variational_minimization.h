@@ -1,7 +1,8 @@
 // Copyright (c) 2026 MDCS contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Convenience header of the Variational_minimization package (globally minimal discrete curves).
+// Convenience header of the Variational_minimization package: globally minimal discrete curves (line
+// arrangements, `_2`) and surfaces (plane arrangements, `_3`).
 
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_H
 #define CGAL_VARIATIONAL_MINIMIZATION_H
@@ -19,5 +20,15 @@
 #include <CGAL/Variational_minimization/minimize_curve_functional_2.h>
 #include <CGAL/Variational_minimization/minimize_on_regular_grid_2.h>
 #include <CGAL/Variational_minimization/IO/write_curve_svg.h>
+
+#include <CGAL/Variational_minimization/Minimal_surface_3.h>
+#include <CGAL/Variational_minimization/Plane_arrangement_3.h>
+#include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/relax_surface_3.h>
+#include <CGAL/Variational_minimization/select_planes_3.h>
+#include <CGAL/Variational_minimization/surface_facet_weights_3.h>
+#include <CGAL/Variational_minimization/surface_functionals_3.h>
+#include <CGAL/Variational_minimization/surface_planes_3.h>
 
 #endif // CGAL_VARIATIONAL_MINIMIZATION_H

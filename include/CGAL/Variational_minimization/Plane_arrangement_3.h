@@ -1,0 +1,174 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The exact arrangement of planes clipped to a box, held as a BSP cell tree: the spatial complex on which MDCS
+// minimizes a surface functional (thesis ch. 2.7). Our own compact structure with exact integer predicates.
+#ifndef CGAL_VARIATIONAL_MINIMIZATION_PLANE_ARRANGEMENT_3_H
+#define CGAL_VARIATIONAL_MINIMIZATION_PLANE_ARRANGEMENT_3_H
+
+#include <CGAL/MDCS/progress.h>
+#include <CGAL/Variational_minimization/internal/plane_arrangement_predicates_3.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Variational_minimization {
+
+/*!
+  \defgroup PkgVariationalMinimizationSurfaces Bivariate problems (minimal surfaces)
+  Globally minimal discrete surfaces: the plane arrangement (BSP complex), plane distributions, functionals, facet
+  weights, the min-cut solve, relaxation and plane selection. Manual page: minimal_surfaces_3.md.
+*/
+
+namespace internal {
+template <class Arrangement> class Plane_arrangement_builder_3;
+}
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief The exact arrangement of planes inside the lattice box `[0, L]^3`, `L = lattice_size`, held as a BSP
+  cell tree.
+
+  The box is the root cell; planes are inserted one by one, and each splits exactly the cells whose interior it
+  crosses (found by descending the tree, whose nodes keep a bounding box of their region). The leaves are the
+  cells of the arrangement: convex polyhedra bounded by *facets*, convex polygons on one plane each, shared by
+  the two cells on either side (one of them is `null_index` for a facet on the box boundary).
+
+  **Exactness.** Planes have bounded integer coefficients (`Lattice_plane_3`), every vertex is the intersection
+  of three of them, and the side of a vertex with respect to a plane is a determinant sign computed with a
+  double filter and an exact 128-bit integer fallback. Every combinatorial decision is exact, whatever the
+  degeneracy (many planes through one line or point, planes through box edges and corners, duplicate planes).
+  Only `point()` is an approximation.
+
+  **Storage.** A facet keeps its plane, its two cells and its polygon as (vertex, plane of the edge to the next
+  vertex) pairs; a cell keeps its facet list; a vertex keeps its three planes and its approximate point.
+
+  **Planes.** Planes 0-5 are the box walls `X = 0`, `X = L`, `Y = 0`, `Y = L`, `Z = 0`, `Z = L`; input plane
+  `i` is plane `6 + i`. An input plane that duplicates an earlier plane or a wall, or misses the open box, is
+  not used (`is_plane_used()`).
+*/
+class Plane_arrangement_3
+{
+public:
+  typedef std::uint32_t Vertex_index;
+  typedef std::uint32_t Facet_index;
+  typedef std::uint32_t Cell_index;
+  typedef std::uint32_t Plane_index;
+  /// An invalid index; as a cell, the outside of the box.
+  static constexpr std::uint32_t null_index = (std::numeric_limits<std::uint32_t>::max)();
+  /// The side length `L` of the lattice box.
+  static constexpr std::int64_t lattice_size = std::int64_t(1) << 16;
+  /// The number of wall planes, which come first.
+  static constexpr std::size_t number_of_walls = 6;
+
+  /// A facet: a convex polygon on `plane`; `negative_cell` lies where the plane's left-hand side is negative.
+  struct Facet
+  {
+    Plane_index plane;
+    Cell_index negative_cell, positive_cell;
+  };
+
+  /// An empty arrangement: the box alone (one cell, six facets, eight vertices).
+  Plane_arrangement_3();
+
+  /*!
+    Builds the arrangement of `planes` in the box. `progress` is a callback `bool(const char* stage, double
+    fraction)` called with stage `"arrangement"`; returning `false` throws `CGAL::MDCS::Operation_cancelled`.
+    \throws std::invalid_argument if a plane breaks the coefficient bounds of `Lattice_plane_3`, or if the
+            arrangement would exceed 2^32 - 2 cells, facets or vertices.
+  */
+  template <class Progress = CGAL::MDCS::No_progress>
+  explicit Plane_arrangement_3(const std::vector<Lattice_plane_3>& planes, Progress progress = Progress());
+
+  /// Inserts one more plane (incremental construction); returns whether it was used.
+  bool insert_plane(const Lattice_plane_3& plane);
+
+  std::size_t number_of_cells() const { return cell_facets_.size(); }
+  std::size_t number_of_facets() const { return facets_.size(); }
+  std::size_t number_of_vertices() const { return vertex_planes_.size(); }
+  /// The number of planes, walls included.
+  std::size_t number_of_planes() const { return planes_.size(); }
+
+  const Lattice_plane_3& plane(Plane_index p) const { return planes_[p]; }
+  bool is_wall(Plane_index p) const { return p < number_of_walls; }
+  /// Whether plane `p` splits at least one cell (walls: always).
+  bool is_plane_used(Plane_index p) const { return used_.at(p) != 0; }
+
+  const Facet& facet(Facet_index f) const { return facets_[f]; }
+  /// Whether the facet lies on the box boundary (on a wall; one of its cells is `null_index`).
+  bool is_boundary_facet(Facet_index f) const { return facets_[f].plane < number_of_walls; }
+  /// The polygon of facet `f`: its vertices in cyclic order.
+  std::vector<Vertex_index> facet_vertices(Facet_index f) const
+  {
+    const std::vector<std::uint32_t>& p = polygons_[f];
+    std::vector<Vertex_index> out(p.size() / 2);
+    for(std::size_t i = 0; i < out.size(); ++i) out[i] = p[2 * i];
+    return out;
+  }
+  std::size_t facet_degree(Facet_index f) const { return polygons_[f].size() / 2; }
+  Vertex_index facet_vertex(Facet_index f, std::size_t k) const { return polygons_[f][2 * k]; }
+  /// The plane of the edge from `facet_vertex(f, k)` to the next vertex.
+  Plane_index facet_edge_plane(Facet_index f, std::size_t k) const { return polygons_[f][2 * k + 1]; }
+
+  const std::vector<Facet_index>& cell_facets(Cell_index c) const { return cell_facets_[c]; }
+
+  /// A double approximation of the vertex in lattice coordinates (relative error about 2^-52).
+  const std::array<double, 3>& point(Vertex_index v) const { return points_[v]; }
+  /// Three planes whose intersection is the vertex.
+  const std::array<Plane_index, 3>& vertex_planes(Vertex_index v) const { return vertex_planes_[v]; }
+
+  /// The exact side (-1, 0, 1) of vertex `v` with respect to plane `p` (sign of the plane's left-hand side).
+  int side(Vertex_index v, Plane_index p) const { return side(v, planes_[p]); }
+  int side(Vertex_index v, const Lattice_plane_3& p) const
+  {
+    bool sure = false;
+    const int s = internal::filtered_side(points_[v], p, double(lattice_size), sure);
+    if(sure) return s;
+    const std::array<Plane_index, 3>& t = vertex_planes_[v];
+    return internal::exact_side(internal::intersect_planes(planes_[t[0]], planes_[t[1]], planes_[t[2]]), p);
+  }
+
+  /// The number of nodes of the BSP tree (leaves are the cells).
+  std::size_t number_of_tree_nodes() const { return nodes_.size(); }
+
+  /// An estimate of the memory held by the arrangement, in bytes (containers' capacities).
+  std::size_t memory_bytes() const;
+
+private:
+  template <class Arrangement> friend class internal::Plane_arrangement_builder_3;
+
+  struct Tree_node
+  {
+    float lo[3], hi[3];
+    std::uint32_t child[2];   // child[0] == null_index: a leaf, child[1] is its cell
+  };
+
+  std::vector<Lattice_plane_3> planes_;
+  std::vector<unsigned char> used_;
+  std::vector<Facet> facets_;
+  std::vector<std::vector<std::uint32_t>> polygons_;       // per facet: v0, e0, v1, e1, ...
+  std::vector<std::vector<Facet_index>> cell_facets_;
+  std::vector<std::array<Plane_index, 3>> vertex_planes_;
+  std::vector<std::array<double, 3>> points_;
+  std::vector<Tree_node> nodes_;
+  std::vector<std::uint32_t> node_of_cell_;
+  // Construction scratch: the side of each vertex with respect to the plane being inserted (valid when its
+  // epoch is the current one).
+  std::vector<std::uint32_t> side_epoch_;
+  std::vector<signed char> side_cache_;
+  std::uint32_t epoch_ = 0;
+  std::set<std::array<std::int64_t, 4>> plane_keys_;
+};
+
+} // namespace Variational_minimization
+} // namespace CGAL
+
+#include <CGAL/Variational_minimization/internal/plane_arrangement_construction_3.h>
+
+#endif // CGAL_VARIATIONAL_MINIMIZATION_PLANE_ARRANGEMENT_3_H

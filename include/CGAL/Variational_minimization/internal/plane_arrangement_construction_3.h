@@ -1,0 +1,400 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Construction of Plane_arrangement_3: the box cell, and the insertion of one plane, which splits every cell whose
+// interior it crosses (candidates from the BSP tree, exact test on the cell's vertices), splitting the shared
+// facets once and closing each pair of children with a new facet on the plane.
+#ifndef CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_PLANE_ARRANGEMENT_CONSTRUCTION_3_H
+#define CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_PLANE_ARRANGEMENT_CONSTRUCTION_3_H
+
+#include <CGAL/Variational_minimization/Plane_arrangement_3.h>
+#include <CGAL/Variational_minimization/internal/plane_arrangement_predicates_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Variational_minimization {
+namespace internal {
+
+template <class Arrangement>
+class Plane_arrangement_builder_3
+{
+  typedef typename Arrangement::Facet Facet;
+  static constexpr std::uint32_t null = Arrangement::null_index;
+
+public:
+  explicit Plane_arrangement_builder_3(Arrangement& a) : a_(a) {}
+
+  void init_box()
+  {
+    const std::int64_t L = Arrangement::lattice_size;
+    for(int t = 0; t < 3; ++t)
+      for(int high = 0; high < 2; ++high) {
+        Lattice_plane_3 p;
+        (t == 0 ? p.a : (t == 1 ? p.b : p.c)) = 1;
+        p.d = high ? -L : 0;
+        a_.planes_.push_back(p);
+        a_.used_.push_back(1);
+        a_.plane_keys_.insert(std::array<std::int64_t, 4>{{p.a, p.b, p.c, p.d}});
+      }
+    for(std::uint32_t k = 0; k < 8; ++k) {
+      const std::uint32_t i = k & 1, j = (k >> 1) & 1, l = (k >> 2) & 1;
+      a_.vertex_planes_.push_back({{i, 2 + j, 4 + l}});
+      a_.points_.push_back({{double(i * L), double(j * L), double(l * L)}});
+      a_.side_epoch_.push_back(0);
+      a_.side_cache_.push_back(0);
+    }
+    a_.cell_facets_.emplace_back();
+    for(std::uint32_t t = 0; t < 3; ++t) {
+      const std::uint32_t u = (t + 1) % 3, w = (t + 2) % 3;
+      for(std::uint32_t high = 0; high < 2; ++high) {
+        auto corner = [&](std::uint32_t cu, std::uint32_t cw) {
+          return (high << t) | (cu << u) | (cw << w);
+        };
+        std::vector<std::uint32_t> poly = {corner(0, 0), 2 * w,     corner(1, 0), 2 * u + 1,
+                                           corner(1, 1), 2 * w + 1, corner(0, 1), 2 * u};
+        const std::uint32_t f = std::uint32_t(a_.facets_.size());
+        a_.facets_.push_back(Facet{2 * t + high, high ? 0u : null, high ? null : 0u});
+        a_.polygons_.push_back(std::move(poly));
+        a_.cell_facets_[0].push_back(f);
+      }
+    }
+    a_.nodes_.emplace_back();
+    a_.node_of_cell_.push_back(0);
+    set_leaf(0, 0);
+  }
+
+  bool insert(const Lattice_plane_3& input)
+  {
+    check_lattice_plane(input, a_.planes_.size() - Arrangement::number_of_walls);
+    const Lattice_plane_3 p = normalized_plane(input);
+    a_.planes_.push_back(p);
+    a_.used_.push_back(0);
+    if(!a_.plane_keys_.insert(std::array<std::int64_t, 4>{{p.a, p.b, p.c, p.d}}).second)
+      return false; // a duplicate of an earlier plane or of a wall
+    h_ = std::uint32_t(a_.planes_.size() - 1);
+    ++a_.epoch_;
+    std::vector<std::uint32_t> candidates;
+    collect_candidates(p, candidates);
+    bool used = false;
+    for(std::uint32_t c : candidates)
+      if(is_crossed(c)) {
+        split_cell(c);
+        used = true;
+      }
+    a_.used_[h_] = used ? 1 : 0;
+    split_vertices_.clear();
+    return used;
+  }
+
+private:
+  int side(std::uint32_t v)
+  {
+    if(a_.side_epoch_[v] != a_.epoch_) {
+      a_.side_epoch_[v] = a_.epoch_;
+      a_.side_cache_[v] = static_cast<signed char>(a_.side(v, a_.planes_[h_]));
+    }
+    return a_.side_cache_[v];
+  }
+
+  void collect_candidates(const Lattice_plane_3& p, std::vector<std::uint32_t>& out) const
+  {
+    const double c[3] = {double(p.a), double(p.b), double(p.c)};
+    std::vector<std::uint32_t> stack(1, 0);
+    while(!stack.empty()) {
+      const typename Arrangement::Tree_node& n = a_.nodes_[stack.back()];
+      stack.pop_back();
+      double lo = double(p.d), hi = double(p.d);
+      for(int k = 0; k < 3; ++k) {
+        const double u = c[k] * double(n.lo[k]), w = c[k] * double(n.hi[k]);
+        lo += (std::min)(u, w);
+        hi += (std::max)(u, w);
+      }
+      if(lo > 0 || hi < 0) continue; // the region (inside the enlarged box) lies strictly on one side
+      if(n.child[0] == null) out.push_back(n.child[1]);
+      else {
+        stack.push_back(n.child[0]);
+        stack.push_back(n.child[1]);
+      }
+    }
+  }
+
+  bool is_crossed(std::uint32_t c)
+  {
+    bool pos = false, neg = false;
+    for(std::uint32_t f : a_.cell_facets_[c]) {
+      const std::vector<std::uint32_t>& poly = a_.polygons_[f];
+      for(std::size_t k = 0; k < poly.size(); k += 2) {
+        const int s = side(poly[k]);
+        pos = pos || s > 0;
+        neg = neg || s < 0;
+        if(pos && neg) return true;
+      }
+    }
+    return false;
+  }
+
+  std::uint32_t split_vertex(std::uint32_t u, std::uint32_t v, std::uint32_t pf, std::uint32_t pe)
+  {
+    const std::uint64_t key = (std::uint64_t((std::min)(u, v)) << 32) | std::uint64_t((std::max)(u, v));
+    auto it = split_vertices_.find(key);
+    if(it != split_vertices_.end()) return it->second;
+    const Exact_vertex_3 x = intersect_planes(a_.planes_[pf], a_.planes_[pe], a_.planes_[h_]);
+    if(x.den == 0)
+      throw std::logic_error("MDCS: Plane_arrangement_3: internal error: an edge crossed by a plane is parallel to it");
+    check_size(a_.vertex_planes_.size(), "vertices");
+    const std::uint32_t w = std::uint32_t(a_.vertex_planes_.size());
+    a_.vertex_planes_.push_back({{pf, pe, h_}});
+    a_.points_.push_back(approximate_point(x));
+    a_.side_epoch_.push_back(a_.epoch_);
+    a_.side_cache_.push_back(0);
+    split_vertices_.emplace(key, w);
+    return w;
+  }
+
+  static void check_size(std::size_t n, const char* what)
+  {
+    if(n + 2 >= std::size_t(null))
+      throw std::invalid_argument(std::string("MDCS: Plane_arrangement_3: too many ") + what +
+                                  " (32-bit indices); use fewer planes");
+  }
+
+  struct Chord
+  {
+    std::uint32_t a, b, plane;
+  };
+
+  void add_chord(std::uint32_t a, std::uint32_t b, std::uint32_t plane)
+  {
+    for(const Chord& c : chords_)
+      if((c.a == a && c.b == b) || (c.a == b && c.b == a)) return;
+    chords_.push_back(Chord{a, b, plane});
+  }
+
+  // A one-sided polygon adds its edge lying on the new plane, if it has one.
+  void add_edge_chord(const std::vector<std::uint32_t>& poly, std::uint32_t plane)
+  {
+    const std::size_t n = poly.size() / 2;
+    for(std::size_t k = 0; k < n; ++k) {
+      const std::size_t j = (k + 1) % n;
+      if(side(poly[2 * k]) == 0 && side(poly[2 * j]) == 0) add_chord(poly[2 * k], poly[2 * j], plane);
+    }
+  }
+
+  void split_cell(std::uint32_t c)
+  {
+    check_size(a_.facets_.size() + a_.cell_facets_[c].size(), "facets");
+    check_size(a_.cell_facets_.size(), "cells");
+    const std::uint32_t cp = std::uint32_t(a_.cell_facets_.size());
+    a_.cell_facets_.emplace_back();
+    const std::uint32_t nf = std::uint32_t(a_.facets_.size());
+    a_.facets_.push_back(Facet{h_, c, cp});
+    a_.polygons_.emplace_back();
+    std::vector<std::uint32_t> old;
+    old.swap(a_.cell_facets_[c]);
+    std::vector<std::uint32_t> neg, pos;
+    chords_.clear();
+    for(std::uint32_t f : old) {
+      const std::uint32_t pf = a_.facets_[f].plane;
+      poly_.assign(a_.polygons_[f].begin(), a_.polygons_[f].end());
+      const std::vector<std::uint32_t>& poly = poly_;
+      const std::size_t n = poly.size() / 2;
+      bool any_pos = false, any_neg = false;
+      for(std::size_t k = 0; k < n; ++k) {
+        const int s = side(poly[2 * k]);
+        any_pos = any_pos || s > 0;
+        any_neg = any_neg || s < 0;
+      }
+      if(!any_neg || !any_pos) {
+        if(!any_neg) {
+          replace_cell(f, c, cp);
+          pos.push_back(f);
+        } else
+          neg.push_back(f);
+        add_edge_chord(poly, pf);
+        continue;
+      }
+      // Split: the polygon with the crossing vertices inserted, then its two sides.
+      aug_.clear();
+      for(std::size_t k = 0; k < n; ++k) {
+        const std::uint32_t v = poly[2 * k], e = poly[2 * k + 1], u = poly[2 * ((k + 1) % n)];
+        const int s = side(v), t = side(u);
+        aug_.push_back({{v, e, std::uint32_t(s + 1)}});
+        if(s * t < 0) aug_.push_back({{split_vertex(v, u, pf, e), e, 1u}});
+      }
+      std::vector<std::uint32_t> pn, pp;
+      std::uint32_t zero[2] = {null, null};
+      int zeros = 0;
+      const std::size_t m = aug_.size();
+      for(std::size_t k = 0; k < m; ++k) {
+        const std::array<std::uint32_t, 3>& x = aug_[k];
+        const std::array<std::uint32_t, 3>& y = aug_[(k + 1) % m];
+        if(x[2] <= 1) {
+          pn.push_back(x[0]);
+          pn.push_back(y[2] <= 1 ? x[1] : h_);
+        }
+        if(x[2] >= 1) {
+          pp.push_back(x[0]);
+          pp.push_back(y[2] >= 1 ? x[1] : h_);
+        }
+        if(x[2] == 1) {
+          if(zeros < 2) zero[zeros] = x[0];
+          ++zeros;
+        }
+      }
+      if(zeros != 2)
+        throw std::logic_error("MDCS: Plane_arrangement_3: internal error: a split facet meets the plane in " +
+                               std::to_string(zeros) + " vertices");
+      add_chord(zero[0], zero[1], pf);
+      const std::uint32_t g = std::uint32_t(a_.facets_.size());
+      Facet piece = a_.facets_[f];
+      const std::uint32_t other = piece.negative_cell == c ? piece.positive_cell : piece.negative_cell;
+      if(piece.negative_cell == c) piece.negative_cell = cp;
+      else piece.positive_cell = cp;
+      a_.facets_.push_back(piece);
+      // Exact capacities: the polygons are the bulk of the memory.
+      a_.polygons_.emplace_back(pp.begin(), pp.end());
+      a_.polygons_[f] = std::vector<std::uint32_t>(pn.begin(), pn.end());
+      neg.push_back(f);
+      pos.push_back(g);
+      if(other != null) a_.cell_facets_[other].push_back(g);
+    }
+    // The new facet: the chords chained into a cycle.
+    std::vector<std::uint32_t> poly;
+    std::vector<char> done(chords_.size(), 0);
+    if(chords_.size() >= 3) {
+      std::uint32_t first = chords_[0].a, next = chords_[0].b;
+      poly.push_back(first);
+      poly.push_back(chords_[0].plane);
+      done[0] = 1;
+      std::size_t count = 1;
+      while(next != first) {
+        std::size_t k = 0;
+        while(k < chords_.size() && (done[k] || (chords_[k].a != next && chords_[k].b != next))) ++k;
+        if(k == chords_.size()) break;
+        done[k] = 1;
+        ++count;
+        poly.push_back(next);
+        poly.push_back(chords_[k].plane);
+        next = chords_[k].a == next ? chords_[k].b : chords_[k].a;
+      }
+      if(next != first || count != chords_.size()) poly.clear();
+    }
+    if(poly.size() < 6)
+      throw std::logic_error("MDCS: Plane_arrangement_3: internal error: the section of a cell by a plane is not "
+                             "a closed polygon");
+    a_.polygons_[nf] = std::vector<std::uint32_t>(poly.begin(), poly.end());
+    neg.push_back(nf);
+    pos.push_back(nf);
+    a_.cell_facets_[c] = std::vector<std::uint32_t>(neg.begin(), neg.end());
+    a_.cell_facets_[cp] = std::vector<std::uint32_t>(pos.begin(), pos.end());
+    // The tree: the leaf of c becomes an inner node with two leaves.
+    const std::uint32_t node = a_.node_of_cell_[c];
+    const std::uint32_t ln = std::uint32_t(a_.nodes_.size());
+    a_.nodes_.emplace_back();
+    a_.nodes_.emplace_back();
+    a_.nodes_[node].child[0] = ln;
+    a_.nodes_[node].child[1] = ln + 1;
+    a_.node_of_cell_[c] = ln;
+    a_.node_of_cell_.push_back(ln + 1);
+    set_leaf(ln, c);
+    set_leaf(ln + 1, cp);
+  }
+
+  void replace_cell(std::uint32_t f, std::uint32_t from, std::uint32_t to)
+  {
+    Facet& x = a_.facets_[f];
+    if(x.negative_cell == from) x.negative_cell = to;
+    else x.positive_cell = to;
+  }
+
+  void set_leaf(std::uint32_t node, std::uint32_t cell)
+  {
+    typename Arrangement::Tree_node& n = a_.nodes_[node];
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for(std::uint32_t f : a_.cell_facets_[cell]) {
+      const std::vector<std::uint32_t>& poly = a_.polygons_[f];
+      for(std::size_t k = 0; k < poly.size(); k += 2)
+        for(int i = 0; i < 3; ++i) {
+          lo[i] = (std::min)(lo[i], a_.points_[poly[k]][i]);
+          hi[i] = (std::max)(hi[i], a_.points_[poly[k]][i]);
+        }
+    }
+    for(int i = 0; i < 3; ++i) {
+      n.lo[i] = float(lo[i] - 0.5);
+      n.hi[i] = float(hi[i] + 0.5);
+    }
+    n.child[0] = null;
+    n.child[1] = cell;
+  }
+
+  Arrangement& a_;
+  std::uint32_t h_ = 0;
+  std::unordered_map<std::uint64_t, std::uint32_t> split_vertices_;
+  std::vector<Chord> chords_;
+  std::vector<std::array<std::uint32_t, 3>> aug_; // vertex, edge plane, side + 1
+  std::vector<std::uint32_t> poly_;
+};
+
+} // namespace internal
+
+inline Plane_arrangement_3::Plane_arrangement_3()
+{
+  internal::Plane_arrangement_builder_3<Plane_arrangement_3> builder(*this);
+  builder.init_box();
+}
+
+template <class Progress>
+Plane_arrangement_3::Plane_arrangement_3(const std::vector<Lattice_plane_3>& planes, Progress progress)
+{
+  internal::Plane_arrangement_builder_3<Plane_arrangement_3> builder(*this);
+  builder.init_box();
+  CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "arrangement", planes.size());
+  for(std::size_t i = 0; i < planes.size(); ++i) {
+    reporter(i);
+    builder.insert(planes[i]);
+  }
+  // Give back the slack of the containers (they grew by doubling).
+  facets_.shrink_to_fit();
+  polygons_.shrink_to_fit();
+  for(auto& c : cell_facets_) c.shrink_to_fit();
+  cell_facets_.shrink_to_fit();
+  vertex_planes_.shrink_to_fit();
+  points_.shrink_to_fit();
+  nodes_.shrink_to_fit();
+  node_of_cell_.shrink_to_fit();
+  side_epoch_.shrink_to_fit();
+  side_cache_.shrink_to_fit();
+  reporter.finish();
+}
+
+inline bool Plane_arrangement_3::insert_plane(const Lattice_plane_3& plane)
+{
+  internal::Plane_arrangement_builder_3<Plane_arrangement_3> builder(*this);
+  return builder.insert(plane);
+}
+
+inline std::size_t Plane_arrangement_3::memory_bytes() const
+{
+  std::size_t bytes = planes_.capacity() * sizeof(Lattice_plane_3) + used_.capacity() +
+                      facets_.capacity() * sizeof(Facet) + polygons_.capacity() * sizeof(std::vector<std::uint32_t>) +
+                      cell_facets_.capacity() * sizeof(std::vector<Facet_index>) +
+                      vertex_planes_.capacity() * sizeof(std::array<Plane_index, 3>) +
+                      points_.capacity() * sizeof(std::array<double, 3>) + nodes_.capacity() * sizeof(Tree_node) +
+                      node_of_cell_.capacity() * 4 + side_epoch_.capacity() * 5;
+  for(const auto& p : polygons_) bytes += p.capacity() * 4;
+  for(const auto& c : cell_facets_) bytes += c.capacity() * 4;
+  return bytes;
+}
+
+} // namespace Variational_minimization
+} // namespace CGAL
+
+#endif // CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_PLANE_ARRANGEMENT_CONSTRUCTION_3_H

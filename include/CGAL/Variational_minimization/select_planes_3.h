@@ -1,0 +1,91 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Plane selection (thesis ch. 2.7): solve, keep the planes the optimum uses, redraw the others, solve again.
+#ifndef CGAL_VARIATIONAL_MINIMIZATION_SELECT_PLANES_3_H
+#define CGAL_VARIATIONAL_MINIMIZATION_SELECT_PLANES_3_H
+
+#include <CGAL/MDCS/progress.h>
+#include <CGAL/Min_cut/solve_min_cut.h>
+#include <CGAL/Variational_minimization/Minimal_surface_3.h>
+#include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/surface_facet_weights_3.h>
+#include <CGAL/Variational_minimization/surface_planes_3.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Variational_minimization {
+
+/// The outcome of `select_planes_3()`.
+struct Plane_selection_result_3
+{
+  /// The best surface found (the energy never increases from one iteration to the next).
+  Minimal_surface_3 surface;
+  /// The energy of each iteration's optimum, in order (non-increasing up to rounding of the weights).
+  std::vector<double> energies;
+  /// The cells of each iteration's arrangement.
+  std::vector<std::size_t> cells;
+  /// The planes of the arrangement the best surface was found on.
+  std::vector<Lattice_plane_3> planes;
+};
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief Plane selection: `iterations` solves with `n` planes each. After each solve the planes that carry a facet
+  of the optimum are kept, with every pencil plane (so that the optimum stays representable), and the others are
+  replaced by new random planes of `options.distribution`. The optimum of an iteration is therefore available to
+  the next one, and the energy cannot increase (up to rounding of quadrature weights; the best is kept anyway).
+  `progress` is called with stage `"plane selection"`.
+  \throws std::invalid_argument for an invalid problem or functional, or `iterations < 1`.
+*/
+template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine,
+          class Progress = CGAL::MDCS::No_progress>
+Plane_selection_result_3 select_planes_3(const Surface_problem_3& problem, const Functional& G, std::size_t n,
+                                         int iterations, const Surface_plane_options_3& options = Surface_plane_options_3(),
+                                         int quadrature_level = 1, Engine engine = Engine(),
+                                         Progress progress = Progress())
+{
+  if(iterations < 1) throw std::invalid_argument("MDCS: select_planes_3: at least one iteration is needed");
+  CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "plane selection", std::size_t(iterations));
+  const std::size_t pencils = surface_pencil_count_3(problem, n, options);
+  std::vector<Lattice_plane_3> planes = surface_planes_3(problem, n, options);
+  Plane_selection_result_3 result;
+  for(int it = 0; it < iterations; ++it) {
+    reporter(std::size_t(it));
+    const Plane_arrangement_3 arrangement(planes);
+    const std::vector<double> w = surface_facet_weights_3(arrangement, problem, G, quadrature_level);
+    Minimal_surface_3 s = minimize_surface_functional_3(arrangement, w, problem, engine);
+    result.energies.push_back(s.energy);
+    result.cells.push_back(arrangement.number_of_cells());
+    if(it == 0 || s.energy < result.surface.energy) {
+      result.surface = s;
+      result.planes = planes;
+    }
+    if(it + 1 == iterations) break;
+    // Keep the pencils and the planes of the best surface; redraw the rest.
+    std::vector<char> keep(result.planes.size(), 0);
+    for(std::size_t i = 0; i < pencils && i < keep.size(); ++i) keep[i] = 1;
+    for(std::uint32_t p : result.surface.planes)
+      if(p >= Plane_arrangement_3::number_of_walls) keep[p - Plane_arrangement_3::number_of_walls] = 1;
+    std::vector<Lattice_plane_3> next;
+    for(std::size_t i = 0; i < result.planes.size(); ++i)
+      if(keep[i]) next.push_back(result.planes[i]);
+    Surface_plane_options_3 fresh = options;
+    fresh.seed = options.seed + 7919 * std::uint64_t(it + 1);
+    const std::vector<Lattice_plane_3> random = surface_planes_3(problem, n + pencils, fresh);
+    for(std::size_t i = surface_pencil_count_3(problem, n + pencils, fresh); i < random.size() && next.size() < n; ++i)
+      next.push_back(random[i]);
+    // The kept planes keep their positions at the front: pencils first, as surface_planes_3 lists them.
+    planes.swap(next);
+  }
+  reporter.finish();
+  return result;
+}
+
+} // namespace Variational_minimization
+} // namespace CGAL
+
+#endif // CGAL_VARIATIONAL_MINIMIZATION_SELECT_PLANES_3_H

@@ -1,0 +1,191 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Random plane distributions for the bivariate problem: isotropic, slope-limited, and pencils of planes through the
+// segments of the boundary curve (thesis ch. 2.7), all with integer coefficients in the lattice of Plane_arrangement_3.
+#ifndef CGAL_VARIATIONAL_MINIMIZATION_SURFACE_PLANES_3_H
+#define CGAL_VARIATIONAL_MINIMIZATION_SURFACE_PLANES_3_H
+
+#include <CGAL/Variational_minimization/Plane_arrangement_3.h>
+#include <CGAL/Variational_minimization/Surface_problem_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Variational_minimization {
+
+/// The law of the random (non-pencil) planes.
+enum class Plane_distribution_3
+{
+  isotropic,    ///< normal uniform on the sphere (in lattice coordinates), through a uniform point of the box
+  slope_limited ///< z = A x + B y + C with |A|, |B| <= max_slope (world), through a uniform point of the box
+};
+
+inline const char* plane_distribution_name(Plane_distribution_3 d)
+{
+  return d == Plane_distribution_3::isotropic ? "isotropic" : "slope-limited";
+}
+
+/// How `surface_planes_3()` draws planes; recorded with every result.
+struct Surface_plane_options_3
+{
+  Plane_distribution_3 distribution = Plane_distribution_3::isotropic;
+  double max_slope = 2;          ///< slope_limited only: bound on |A| and |B| in world units
+  double pencil_fraction = 0.1;  ///< share of the planes forced through the boundary segments (at least one each)
+  std::uint64_t seed = 1;
+};
+
+namespace internal {
+
+inline Lattice_plane_3 reduced_plane(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d)
+{
+  Lattice_plane_3 p;
+  p.a = a; p.b = b; p.c = c; p.d = d;
+  return normalized_plane(p);
+}
+
+// A plane with normal n (any scale), through the lattice point q; the normal is scaled to integers of at most 2^20.
+inline Lattice_plane_3 plane_through(const std::array<double, 3>& n, const std::array<double, 3>& q)
+{
+  const double m = (std::max)({std::abs(n[0]), std::abs(n[1]), std::abs(n[2])});
+  const double s = double(1 << 20) / m;
+  const std::int64_t a = std::llround(n[0] * s), b = std::llround(n[1] * s), c = std::llround(n[2] * s);
+  const std::int64_t d = -std::llround(double(a) * q[0] + double(b) * q[1] + double(c) * q[2]);
+  return reduced_plane(a, b, c, d);
+}
+
+// A random non-vertical plane through the lattice segment p-q: normal (q - p) x r for a random integer r.
+template <class Rng>
+Lattice_plane_3 pencil_plane(const std::array<std::int64_t, 3>& p, const std::array<std::int64_t, 3>& q, Rng& rng)
+{
+  std::uniform_int_distribution<std::int64_t> U(-255, 255);
+  const std::int64_t u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  for(int attempt = 0; attempt < 1000; ++attempt) {
+    const std::int64_t r[3] = {U(rng), U(rng), U(rng)};
+    const std::int64_t a = u[1] * r[2] - u[2] * r[1], b = u[2] * r[0] - u[0] * r[2], c = u[0] * r[1] - u[1] * r[0];
+    if(c == 0) continue; // vertical planes are useless for a function graph
+    return reduced_plane(a, b, c, -(a * p[0] + b * p[1] + c * p[2]));
+  }
+  throw std::logic_error("MDCS: surface_planes_3: no non-vertical plane through a boundary segment");
+}
+
+// A plane through the boundary segment p-q (on a side wall) whose slope across the segment, towards the inside of the
+// domain, is `lattice_slope` (dZ per lattice step): normal (q - p) x (64 n_in + k e_z), |k| <= 511.
+inline Lattice_plane_3 sloped_pencil_plane(const std::array<std::int64_t, 3>& p, const std::array<std::int64_t, 3>& q,
+                                           double lattice_slope)
+{
+  const std::int64_t L = Plane_arrangement_3::lattice_size;
+  std::int64_t n_in[2] = {0, 0};
+  if(p[0] == 0 && q[0] == 0) n_in[0] = 1;
+  else if(p[0] == L && q[0] == L) n_in[0] = -1;
+  else if(p[1] == 0 && q[1] == 0) n_in[1] = 1;
+  else n_in[1] = -1;
+  const std::int64_t k = (std::max)(std::int64_t(-511), (std::min)(std::int64_t(511), std::int64_t(std::llround(64 * lattice_slope))));
+  const std::int64_t u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  const std::int64_t v[3] = {64 * n_in[0], 64 * n_in[1], k};
+  const std::int64_t a = u[1] * v[2] - u[2] * v[1], b = u[2] * v[0] - u[0] * v[2], c = u[0] * v[1] - u[1] * v[0];
+  return reduced_plane(a, b, c, -(a * p[0] + b * p[1] + c * p[2]));
+}
+
+// The plane through the boundary segment p-q and the apex c (X, Y multiples of 2^8: see Surface_problem_3).
+inline Lattice_plane_3 cone_plane(const std::array<std::int64_t, 3>& p, const std::array<std::int64_t, 3>& q,
+                                  const std::array<std::int64_t, 3>& c)
+{
+  const std::int64_t u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  const std::int64_t v[3] = {c[0] - p[0], c[1] - p[1], c[2] - p[2]};
+  std::int64_t a = u[1] * v[2] - u[2] * v[1], b = u[2] * v[0] - u[0] * v[2], cc = u[0] * v[1] - u[1] * v[0];
+  const std::int64_t g = gcd64(gcd64(a, b), cc);
+  if(g == 0) throw std::logic_error("MDCS: surface_planes_3: degenerate boundary cone");
+  a /= g; b /= g; cc /= g;
+  return reduced_plane(a, b, cc, -(a * p[0] + b * p[1] + cc * p[2]));
+}
+
+} // namespace internal
+
+/// The number of pencil planes that `surface_planes_3(problem, n, options)` puts first in its list.
+inline std::size_t surface_pencil_count_3(const Surface_problem_3& problem, std::size_t n,
+                                          const Surface_plane_options_3& options)
+{
+  const std::size_t segments = std::size_t(4 * problem.boundary_segments_per_side) * (problem.is_relaxed() ? 2 : 1);
+  return (std::max)(segments, std::size_t(std::ceil(options.pencil_fraction * double(n))));
+}
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief `n` random planes for `problem`: pencils of planes through the segments of the boundary curve(s)
+  (`max(number of segments, pencil_fraction * n)` of them), the others drawn from `options.distribution`.
+
+  The first plane through each segment passes through the apex (centre of Ω, mean boundary height): together
+  these planes hold the *boundary cone*, a piecewise linear function that meets the boundary condition, so that
+  the discrete problem is always feasible. The other pencil planes turn about the segments at random
+  (round-robin over the segments). The pencils make the boundary curve a union of arrangement edges, which the
+  cut needs.
+  \throws std::invalid_argument if the problem is invalid.
+*/
+inline std::vector<Lattice_plane_3> surface_planes_3(const Surface_problem_3& problem, std::size_t n,
+                                                     const Surface_plane_options_3& options = Surface_plane_options_3())
+{
+  problem.validate();
+  if(!(options.pencil_fraction >= 0 && options.pencil_fraction <= 1))
+    throw std::invalid_argument("MDCS: surface_planes_3: pencil_fraction must be in [0, 1]");
+  if(options.distribution == Plane_distribution_3::slope_limited && !(options.max_slope > 0))
+    throw std::invalid_argument("MDCS: surface_planes_3: max_slope must be > 0");
+  std::mt19937_64 rng(options.seed);
+  const std::int64_t L = Plane_arrangement_3::lattice_size;
+  std::vector<std::array<std::array<std::int64_t, 3>, 2>> segments;
+  std::vector<Lattice_plane_3> planes;
+  for(int upper = 0; upper < (problem.is_relaxed() ? 2 : 1); ++upper) {
+    const auto loop = problem.boundary_loop(upper != 0);
+    std::int64_t mean = 0;
+    for(const auto& p : loop) mean += p[2];
+    const std::array<std::int64_t, 3> apex = {{L / 2, L / 2, mean / std::int64_t(loop.size())}};
+    for(std::size_t i = 0; i < loop.size(); ++i) {
+      const auto& p = loop[i];
+      const auto& q = loop[(i + 1) % loop.size()];
+      segments.push_back({{p, q}});
+      if(upper == 0) planes.push_back(internal::cone_plane(p, q, apex));
+    }
+  }
+  const std::size_t pencils = surface_pencil_count_3(problem, n, options);
+  std::uniform_real_distribution<double> slope(-options.max_slope, options.max_slope);
+  for(std::size_t i = planes.size(); i < pencils; ++i) {
+    const auto& s = segments[i % segments.size()];
+    if(options.distribution == Plane_distribution_3::slope_limited) {
+      // The slope across the segment, in lattice units of the wall's inward axis.
+      const bool x_wall = s[0][0] == s[1][0] && (s[0][0] == 0 || s[0][0] == L);
+      const double h = x_wall ? problem.domain.xmax() - problem.domain.xmin()
+                              : problem.domain.ymax() - problem.domain.ymin();
+      planes.push_back(internal::sloped_pencil_plane(s[0], s[1], slope(rng) * h / (problem.zmax - problem.zmin)));
+    } else
+      planes.push_back(internal::pencil_plane(s[0], s[1], rng));
+  }
+  std::uniform_real_distribution<double> U(0, double(L));
+  std::normal_distribution<double> N;
+  std::uniform_real_distribution<double> S(-options.max_slope, options.max_slope);
+  const double sx = (problem.domain.xmax() - problem.domain.xmin()) / double(L),
+               sy = (problem.domain.ymax() - problem.domain.ymin()) / double(L),
+               sz = (problem.zmax - problem.zmin) / double(L);
+  while(planes.size() < n) {
+    const std::array<double, 3> q = {{U(rng), U(rng), U(rng)}};
+    std::array<double, 3> normal;
+    if(options.distribution == Plane_distribution_3::isotropic)
+      normal = {{N(rng), N(rng), N(rng)}};
+    else
+      normal = {{-S(rng) * sx / sz, -S(rng) * sy / sz, 1.0}};
+    if(!(std::abs(normal[0]) + std::abs(normal[1]) + std::abs(normal[2]) > 1e-12)) continue;
+    planes.push_back(internal::plane_through(normal, q));
+  }
+  return planes;
+}
+
+} // namespace Variational_minimization
+} // namespace CGAL
+
+#endif // CGAL_VARIATIONAL_MINIMIZATION_SURFACE_PLANES_3_H
