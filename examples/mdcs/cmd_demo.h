@@ -33,7 +33,12 @@ inline const char* demo_usage()
     "  geodesics         exact geodesic distances and shortest paths on CGAL's elephant and Chinese dragon (a\n"
     "                    generated torus without CGAL's data), checked against Surface_mesh_shortest_path;\n"
     "                    in geodesics-MESH/ folders\n"
-    "  --quick           smaller grids, the elephant only (for a fast smoke run)\n";
+    "  surface           minimal surfaces (BSP plane arrangement + min-cut): saddle, heavy membrane, Scherk (exact\n"
+    "                    area) and a blob density with plane selection, relaxed on an 80^2 grid\n"
+    "  mwt               minimum weight triangulations (triangle LP), certified; a fractional LP resolved exactly\n"
+    "  silhouettes       loop picking and loop mapping (min cut) on a 20k-face bunny with a 1k-face coarse mesh,\n"
+    "                    12-frame rotation\n"
+    "  --quick           smaller grids and meshes, fewer runs (for a fast smoke run)\n";
 }
 
 inline int command_demo(const Options& o)
