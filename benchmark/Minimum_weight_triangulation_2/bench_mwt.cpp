@@ -1,0 +1,149 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Benchmark of minimum_weight_triangulation_2 on the LP-only path (diamond test + triangle LP):
+// uniform, clustered and normal points, odd wheels (fractional LP -> branch and bound), per-stage times,
+// peak memory, and the fraction of integral LP optima over many random sets (thesis ch. 3.4.4).
+//
+// usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--repeats R] [--sets S] [--max-wheel K] [--csv FILE]
+//   default sizes 100, 300, 1000, 2000 uniform; --large adds 5000 and 10000 (one run each unless --sizes is
+//   given). Wheels k = 13..K (default 41, 0: none); --sets: random sets for the integrality count (default 100).
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Minimum_weight_triangulation_2.h>
+
+#include "mdcs_bench.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_2 Point;
+namespace MWT = CGAL::Minimum_weight_triangulation_2;
+
+std::vector<Point> points(const std::string& d, int n, unsigned seed)
+{
+  std::mt19937 g(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> nd(0, 1);
+  std::vector<Point> p;
+  if(d == "uniform") for(int i = 0; i < n; ++i) p.emplace_back(u(g), u(g));
+  else if(d == "normal") for(int i = 0; i < n; ++i) p.emplace_back(nd(g), nd(g));
+  else {   // clustered: n/100 Gaussian clusters
+    const int c = std::max(1, n / 100);
+    std::vector<Point> centre;
+    for(int i = 0; i < c; ++i) centre.emplace_back(u(g), u(g));
+    const double s = 0.3 / std::sqrt(double(c));
+    for(int i = 0; i < n; ++i) {
+      const Point& q = centre[std::size_t(g() % c)];
+      p.emplace_back(q.x() + s * nd(g), q.y() + s * nd(g));
+    }
+  }
+  return p;
+}
+
+std::vector<Point> wheel(int k)
+{
+  std::vector<Point> p{Point(0, 0)};
+  for(int i = 0; i < k; ++i) p.emplace_back(std::cos(2 * M_PI * i / k), std::sin(2 * M_PI * i / k));
+  return p;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  bool large = false, uniform_only = false;
+  std::vector<int> sizes{100, 300, 1000, 2000};
+  bool explicit_sizes = false;
+  int repeats = 3, sets = 100, max_wheel = 41;
+  std::string csv = "mwt.csv";
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a == "--large") large = true;
+    else if(a == "--repeats" && i + 1 < argc) repeats = std::max(1, std::atoi(argv[++i]));
+    else if(a == "--sets" && i + 1 < argc) sets = std::max(0, std::atoi(argv[++i]));
+    else if(a == "--max-wheel" && i + 1 < argc) max_wheel = std::atoi(argv[++i]);
+    else if(a == "--csv" && i + 1 < argc) csv = argv[++i];
+    else if(a == "--uniform-only") uniform_only = true;
+    else if(a == "--sizes" && i + 1 < argc) {
+      sizes.clear();
+      explicit_sizes = true;
+      std::string list = argv[++i];
+      for(std::size_t pos = 0; pos < list.size();) {
+        const std::size_t comma = list.find(',', pos);
+        sizes.push_back(std::atoi(list.substr(pos, comma - pos).c_str()));
+        pos = comma == std::string::npos ? list.size() : comma + 1;
+      }
+    }
+    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--repeats R] [--sets S] [--max-wheel K] [--csv FILE]\n"); return 2; }
+  }
+  mdcs_bench::Table table({"input", "n", "status", "weight", "LP_opt", "cand_edges", "edges_per_n", "triangles", "lp_cols",
+                           "lp_rows", "t_candidates", "t_triangles", "t_lp_build", "t_lp_solve", "t_certificate",
+                           "t_branch_bound", "t_total", "peak_MiB"});
+  auto run = [&](const std::string& name, const std::vector<Point>& p, int reps, double bb_limit) {
+    std::vector<double> tc, tt, tb, ts, tcert, tbb, tot;
+    MWT::Mwt_result r;
+    for(int k = 0; k < reps; ++k) {
+      MWT::Mwt_options o;
+      o.branch_and_bound_time_limit = bb_limit;
+      r = MWT::minimum_weight_triangulation_2(p, o);
+      const auto& s = r.statistics;
+      tc.push_back(s.time_candidates); tt.push_back(s.time_triangles); tb.push_back(s.time_lp_build);
+      ts.push_back(s.time_lp_solve); tcert.push_back(s.time_certificate); tbb.push_back(s.time_branch_and_bound);
+      tot.push_back(s.time_total);
+    }
+    const auto& s = r.statistics;
+    table.add_row({name, std::to_string(p.size()), MWT::to_string(r.status), mdcs_bench::fmt(r.weight, "%.6f"),
+                   mdcs_bench::fmt(r.lp_objective, "%.6f"), std::to_string(s.candidate_edges),
+                   mdcs_bench::fmt(double(s.candidate_edges) / p.size(), "%.2f"), std::to_string(s.empty_triangles),
+                   std::to_string(s.lp_columns), std::to_string(s.lp_rows), mdcs_bench::fmt(mdcs_bench::median(tc)),
+                   mdcs_bench::fmt(mdcs_bench::median(tt)), mdcs_bench::fmt(mdcs_bench::median(tb)),
+                   mdcs_bench::fmt(mdcs_bench::median(ts)), mdcs_bench::fmt(mdcs_bench::median(tcert)),
+                   mdcs_bench::fmt(mdcs_bench::median(tbb)), mdcs_bench::fmt(mdcs_bench::median(tot)),
+                   mdcs_bench::fmt(mdcs_bench::peak_rss_mib(), "%.0f")});
+    std::fprintf(stderr, "%s n=%zu: %s, %.3f s\n", name.c_str(), p.size(), MWT::to_string(r.status), mdcs_bench::median(tot));
+  };
+  if(large) { sizes.push_back(5000); sizes.push_back(10000); }
+  for(int n : sizes) run("uniform", points("uniform", n, 1), (n >= 5000 && !explicit_sizes) ? 1 : repeats, 0);
+  if(!uniform_only) for(int n : {1000, 2000}) {
+    run("clustered", points("clustered", n, 2), repeats, 0);
+    run("normal", points("normal", n, 3), repeats, 0);
+  }
+  for(int k = 13; k <= max_wheel; k += (k < 21 ? 2 : 10)) run("wheel", wheel(k), 1, 120);
+  table.print();
+  if(!table.write_csv(csv)) std::fprintf(stderr, "cannot write %s\n", csv.c_str());
+
+  // Thesis experiment: fraction of integral LP optima over random uniform sets of 10, 20, 60, 200 points.
+  if(sets > 0) {
+    const int sz[4] = {10, 20, 60, 200};
+    int integral[4] = {0, 0, 0, 0}, count[4] = {0, 0, 0, 0}, certified = 0;
+    const double t0 = mdcs_bench::now_seconds();
+    for(int s = 0; s < sets; ++s) {
+      const int c = s % 4;
+      const auto r = MWT::minimum_weight_triangulation_2(points("uniform", sz[c], 5000 + unsigned(s)));
+      ++count[c];
+      integral[c] += r.lp_integral;
+      certified += r.status == MWT::Mwt_status::certified_optimal;
+    }
+    mdcs_bench::Table t2({"n", "sets", "integral_LP", "fraction"});
+    for(int c = 0; c < 4; ++c)
+      t2.add_row({std::to_string(sz[c]), std::to_string(count[c]), std::to_string(integral[c]),
+                  mdcs_bench::fmt(count[c] ? double(integral[c]) / count[c] : 0.0, "%.4f")});
+    std::printf("\nIntegral LP optima over %d random uniform sets (%d certified optimal), %.1f s:\n", sets, certified,
+                mdcs_bench::now_seconds() - t0);
+    t2.print();
+    std::string csv2 = csv;
+    const auto dot = csv2.rfind(".csv");
+    csv2 = (dot == std::string::npos ? csv2 : csv2.substr(0, dot)) + "_integrality.csv";
+    t2.write_csv(csv2);
+  }
+  return 0;
+}

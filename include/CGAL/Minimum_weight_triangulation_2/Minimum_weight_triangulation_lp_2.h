@@ -1,0 +1,364 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The triangle-based LP for the minimum weight triangulation, stage by stage: candidate edges (diamond test),
+// empty triangles, LP, solve, certificate, branch and bound.
+
+#ifndef CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MINIMUM_WEIGHT_TRIANGULATION_LP_2_H
+#define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MINIMUM_WEIGHT_TRIANGULATION_LP_2_H
+
+#include <CGAL/Minimum_weight_triangulation_2/Linear_program.h>
+#include <CGAL/Minimum_weight_triangulation_2/Mwt_result.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Candidate_edges_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Empty_triangles_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Validation_2.h>
+#include <CGAL/Interval_nt.h>
+#include <CGAL/MDCS/progress.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Minimum_weight_triangulation_2 {
+
+/*!
+  \brief Stage control for the triangle-based LP of the minimum weight triangulation.
+
+  \tparam Kernel a CGAL kernel; with `Exact_predicates_inexact_constructions_kernel` every combinatorial
+  decision (collinearity, emptiness, side of an edge, validation) is exact.
+
+  Usage: construct (checks the input, computes the hull), then `compute_candidate_edges()`,
+  `compute_empty_triangles()`, `build_linear_program()`, `solve(solver)`; `minimum_weight_triangulation_2()`
+  runs all of them. Every stage can be inspected (`candidate_edges()`, `linear_program()`, ...).
+*/
+template <class Kernel>
+class Minimum_weight_triangulation_lp_2
+{
+public:
+  typedef typename Kernel::Point_2 Point_2;
+  typedef std::pair<int, int> Edge;
+
+  /// \pre at least 3 distinct points with finite coordinates, not all collinear (else std::invalid_argument).
+  Minimum_weight_triangulation_lp_2(const std::vector<Point_2>& points, const Mwt_options& options = Mwt_options())
+    : input_(points), pts_(input_), options_(options)
+  {
+    if(!options_.progress) options_.progress = [](const char*, double) { return true; };
+    hull_ = internal::checked_hull_boundary(pts_);
+    grid_.reset(new internal::Point_grid_2(pts_, 2.0));
+    double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
+    for(std::size_t i = 0; i < pts_.size(); ++i) {
+      xmin = std::min(xmin, pts_.x(int(i))); xmax = std::max(xmax, pts_.x(int(i)));
+      ymin = std::min(ymin, pts_.y(int(i))); ymax = std::max(ymax, pts_.y(int(i)));
+    }
+    scale_ = std::hypot(xmax - xmin, ymax - ymin);
+    if(!(scale_ > 0) || !std::isfinite(scale_))
+      throw std::invalid_argument("minimum_weight_triangulation_2: the bounding box diagonal is not finite and positive");
+    stats_.points = pts_.size();
+    stats_.hull_points = hull_.size();
+  }
+
+  Minimum_weight_triangulation_lp_2(const Minimum_weight_triangulation_lp_2&) = delete;
+  Minimum_weight_triangulation_lp_2& operator=(const Minimum_weight_triangulation_lp_2&) = delete;
+
+  const std::vector<int>& hull() const { return hull_; }
+  const std::vector<Edge>& candidate_edges() const { return edges_; }
+  const Sparse_linear_program& linear_program() const { return lp_; }
+  /// Vertices (counter-clockwise) of the triangle of LP column `j`.
+  std::array<int, 3> column_triangle(std::size_t j) const { return triangles_[j].v; }
+  const Mwt_statistics& statistics() const { return stats_; }
+  /// Costs are divided by this length (the bounding box diagonal) in the LP.
+  double scale() const { return scale_; }
+
+  bool uses_diamond_test() const
+  {
+    return options_.pruning == Pruning::diamond ||
+           (options_.pruning == Pruning::automatic && options_.metric == Edge_metric::L2 && !options_.triangle_weight);
+  }
+
+  void compute_candidate_edges()
+  {
+    const auto t0 = clock::now();
+    if(options_.pruning == Pruning::diamond && (options_.metric != Edge_metric::L2 || options_.triangle_weight))
+      throw std::invalid_argument("minimum_weight_triangulation_2: the diamond test is valid for the Euclidean metric only");
+    edges_ = uses_diamond_test() ? internal::diamond_candidate_edges(pts_, *grid_, options_.progress)
+                                 : internal::all_valid_edges(pts_, *grid_, options_.progress);
+    // hull edges are always candidates (one side is empty); make sure of it
+    index_.reset(new internal::Edge_index(edges_, pts_.size()));
+    for(std::size_t i = 0; i < hull_.size(); ++i) {
+      const int a = hull_[i], b = hull_[(i + 1) % hull_.size()];
+      if(index_->find(a, b) < 0) edges_.emplace_back(std::min(a, b), std::max(a, b));
+    }
+    index_.reset(new internal::Edge_index(edges_, pts_.size()));
+    is_hull_.assign(edges_.size(), 0);
+    for(std::size_t i = 0; i < hull_.size(); ++i) is_hull_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])] = 1;
+    stats_.candidate_edges = edges_.size();
+    stats_.time_candidates = since(t0);
+  }
+
+  void compute_empty_triangles()
+  {
+    if(!index_) compute_candidate_edges();
+    const auto t0 = clock::now();
+    auto all = internal::empty_triangles(pts_, *grid_, edges_, *index_, options_.progress);
+    stats_.empty_triangles = all.size();
+    triangles_ = internal::remove_unusable_triangles(all, is_hull_);
+    triangles_done_ = true;
+    stats_.time_triangles = since(t0);
+  }
+
+  /// Variables: the usable empty triangles; rows: hull edges (= 1) and interior edges (left - right = 0).
+  void build_linear_program()
+  {
+    if(!triangles_done_) compute_empty_triangles();
+    const auto t0 = clock::now();
+    lp_ = Sparse_linear_program();
+    row_of_edge_.assign(edges_.size(), -1);
+    row_is_hull_.clear();
+    for(const auto& t : triangles_)
+      for(int i = 0; i < 3; ++i) {
+        const int e = t.edge[i];
+        if(row_of_edge_[e] < 0) {
+          row_of_edge_[e] = is_hull_[e] ? lp_.add_row(1, 1) : lp_.add_row(0, 0);
+          row_is_hull_.push_back(is_hull_[e]);
+        }
+      }
+    for(std::size_t i = 0; i < hull_.size(); ++i)
+      if(row_of_edge_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])] < 0)
+        throw std::runtime_error("minimum_weight_triangulation_2: a hull edge has no empty triangle (internal error)");
+    edge_length_.resize(edges_.size());
+    for(std::size_t e = 0; e < edges_.size(); ++e) edge_length_[e] = length(edges_[e].first, edges_[e].second);
+    for(const auto& t : triangles_) {
+      int rows[3];
+      double val[3];
+      for(int i = 0; i < 3; ++i) {
+        rows[i] = row_of_edge_[t.edge[i]];
+        val[i] = is_hull_[t.edge[i]] ? 1.0 : double(t.side[i]);
+      }
+      lp_.add_column(triangle_cost(t) / scale_, 0, Sparse_linear_program::infinity(), rows, val, 3);
+    }
+    stats_.lp_columns = lp_.number_of_columns();
+    stats_.lp_rows = lp_.number_of_rows;
+    stats_.lp_nonzeros = lp_.number_of_nonzeros();
+    stats_.time_lp_build = since(t0);
+    lp_done_ = true;
+  }
+
+  /*!
+    Solves the LP with `solver` (a model of `LinearProgramSolver`), checks integrality, validates and
+    certifies. A fractional optimum is resolved with `binary_solver(lp)` when `options.resolve_fractional`
+    and a binary solver is given (a callable returning a `Linear_program_solution` of the 0/1 program).
+  */
+  template <class LpSolver>
+  Mwt_result solve(const LpSolver& solver,
+                   std::function<Linear_program_solution(const Sparse_linear_program&)> binary_solver = nullptr)
+  {
+    if(!lp_done_) build_linear_program();
+    Mwt_result r;
+    r.solver = solver.name();
+    if(!options_.progress("LP solve", 0)) throw CGAL::MDCS::Operation_cancelled("LP solve");
+    auto t0 = clock::now();
+    const Linear_program_solution sol = solver.solve(lp_);
+    stats_.time_lp_solve = since(t0);
+    stats_.lp_iterations = sol.iterations;
+    if(!options_.progress("LP solve", 1)) throw CGAL::MDCS::Operation_cancelled("LP solve");
+    if(sol.status != Lp_status::optimal || sol.primal.size() != lp_.number_of_columns()) {
+      r.status = Mwt_status::solver_failed;
+      r.message = std::string("LP solver: ") + to_string(sol.status) + " (" + sol.message + ")";
+      return finish(r);
+    }
+    r.lp_objective = sol.objective * scale_;
+    r.lp_exact = sol.exact;
+    t0 = clock::now();
+    r.lower_bound = dual_lower_bound(sol.dual);
+    std::size_t fractional = 0;
+    std::vector<std::array<int, 3>> chosen;
+    for(std::size_t j = 0; j < sol.primal.size(); ++j) {
+      const double x = sol.primal[j];
+      if(std::abs(x - 1) <= options_.integrality_tolerance) chosen.push_back(triangles_[j].v);
+      else if(std::abs(x) > options_.integrality_tolerance) ++fractional;
+    }
+    stats_.fractional_variables = fractional;
+    r.lp_integral = fractional == 0;
+    if(r.lp_integral) {
+      const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, chosen) : std::string();
+      if(!err.empty()) {
+        r.status = Mwt_status::solver_failed;
+        r.message = "the integral LP solution is not a triangulation: " + err;
+      } else {
+        r.triangles = chosen;
+        r.weight = weight_of(chosen, &upper_weight_);
+        const bool ok = r.lower_bound >= upper_weight_ - options_.certificate_tolerance * std::abs(upper_weight_);
+        r.status = ok ? Mwt_status::certified_optimal : Mwt_status::optimal_uncertified;
+        r.message = ok ? "integral LP optimum, dual bound certified" : "integral LP optimum, dual bound not certified";
+      }
+      stats_.time_certificate = since(t0);
+      return finish(r);
+    }
+    stats_.time_certificate = since(t0);
+    r.message = "fractional LP optimum (" + std::to_string(fractional) + " fractional variables)";
+    if(!options_.resolve_fractional || !binary_solver) {
+      r.status = Mwt_status::fractional_bound_only;
+      return finish(r);
+    }
+    if(!options_.progress("branch and bound", 0)) throw CGAL::MDCS::Operation_cancelled("branch and bound");
+    t0 = clock::now();
+    const Linear_program_solution mip = binary_solver(lp_);
+    stats_.time_branch_and_bound = since(t0);
+    if(!options_.progress("branch and bound", 1)) throw CGAL::MDCS::Operation_cancelled("branch and bound");
+    if(mip.status != Lp_status::optimal || mip.primal.size() != lp_.number_of_columns()) {
+      r.status = Mwt_status::fractional_bound_only;
+      r.message += "; branch and bound did not finish: " + mip.message;
+      return finish(r);
+    }
+    chosen.clear();
+    for(std::size_t j = 0; j < mip.primal.size(); ++j)
+      if(mip.primal[j] > 0.5) chosen.push_back(triangles_[j].v);
+    const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, chosen) : std::string();
+    if(!err.empty()) {
+      r.status = Mwt_status::solver_failed;
+      r.message += "; the branch-and-bound solution is not a triangulation: " + err;
+      return finish(r);
+    }
+    r.triangles = chosen;
+    r.weight = weight_of(chosen, &upper_weight_);
+    r.status = Mwt_status::optimal_after_branch_and_bound;
+    r.message += "; resolved by branch and bound";
+    return finish(r);
+  }
+
+  /// Weight (sum of edge lengths) of a triangulation given by triangles; `upper` receives a rigorous upper bound.
+  double weight_of(const std::vector<std::array<int, 3>>& tri, double* upper = nullptr) const
+  {
+    std::vector<std::pair<int, int>> e;
+    e.reserve(3 * tri.size());
+    for(const auto& t : tri)
+      for(int i = 0; i < 3; ++i) e.emplace_back(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
+    std::sort(e.begin(), e.end());
+    e.erase(std::unique(e.begin(), e.end()), e.end());
+    if(options_.triangle_weight) {
+      double s = 0;
+      for(const auto& t : tri) s += user_weight(t[0], t[1], t[2]);
+      if(upper) *upper = s * (1 + 1e-12);
+      return s;
+    }
+    double s = 0;
+    Interval I(0);
+    for(const auto& ed : e) {
+      s += length(ed.first, ed.second);
+      I += interval_length(ed.first, ed.second);
+    }
+    if(upper) *upper = I.sup();
+    return s;
+  }
+
+private:
+  typedef std::chrono::steady_clock clock;
+  typedef CGAL::Interval_nt<true> Interval;
+
+  static double since(clock::time_point t0) { return std::chrono::duration<double>(clock::now() - t0).count(); }
+
+  Mwt_result finish(Mwt_result& r)
+  {
+    stats_.time_total = stats_.time_candidates + stats_.time_triangles + stats_.time_lp_build + stats_.time_lp_solve +
+                        stats_.time_certificate + stats_.time_branch_and_bound;
+    r.statistics = stats_;
+    return r;
+  }
+
+  double length(int a, int b) const
+  {
+    const double dx = pts_.x(b) - pts_.x(a), dy = pts_.y(b) - pts_.y(a);
+    switch(options_.metric) {
+      case Edge_metric::L1: return std::abs(dx) + std::abs(dy);
+      case Edge_metric::Linf: return std::max(std::abs(dx), std::abs(dy));
+      default: return std::sqrt(dx * dx + dy * dy);
+    }
+  }
+
+  Interval interval_length(int a, int b) const
+  {
+    const Interval dx = Interval(pts_.x(b)) - Interval(pts_.x(a)), dy = Interval(pts_.y(b)) - Interval(pts_.y(a));
+    switch(options_.metric) {
+      case Edge_metric::L1: return CGAL::abs(dx) + CGAL::abs(dy);
+      case Edge_metric::Linf: {
+        const Interval ax = CGAL::abs(dx), ay = CGAL::abs(dy);
+        return Interval((std::max)(ax.inf(), ay.inf()), (std::max)(ax.sup(), ay.sup()));
+      }
+      default: return CGAL::sqrt(CGAL::square(dx) + CGAL::square(dy));
+    }
+  }
+
+  double user_weight(int a, int b, int c) const
+  {
+    const double w = options_.triangle_weight(pts_.x(a), pts_.y(a), pts_.x(b), pts_.y(b), pts_.x(c), pts_.y(c));
+    if(!(w > 0) || !std::isfinite(w))
+      throw std::invalid_argument("minimum_weight_triangulation_2: the user triangle weight must be finite and > 0");
+    return w;
+  }
+
+  double triangle_cost(const internal::Lp_triangle& t) const
+  {
+    if(options_.triangle_weight) return user_weight(t.v[0], t.v[1], t.v[2]);
+    double c = 0;
+    for(int i = 0; i < 3; ++i) c += (is_hull_[t.edge[i]] ? 1.0 : 0.5) * edge_length_[t.edge[i]];
+    return c;
+  }
+
+  // Rigorous lower bound (input units) of every triangulation over the candidate edges from any dual
+  // vector y: for feasible x (0 <= x_t <= 1), c.x = b.y + d.x >= b.y + sum_t min(0, d_t), d = c - A^T y.
+  double dual_lower_bound(const std::vector<double>& y) const
+  {
+    if(y.size() != lp_.number_of_rows) return -HUGE_VAL;
+    Interval lb(0);
+    for(std::size_t i = 0; i < y.size(); ++i) {
+      if(!std::isfinite(y[i])) return -HUGE_VAL;
+      if(row_is_hull_[i]) lb += Interval(y[i]);
+    }
+    const Interval S(scale_);
+    for(std::size_t j = 0; j < triangles_.size(); ++j) {
+      const auto& t = triangles_[j];
+      Interval c(0);
+      if(options_.triangle_weight) {
+        const double w = user_weight(t.v[0], t.v[1], t.v[2]) / scale_;
+        c = Interval(w * (1 - 1e-12), w * (1 + 1e-12));
+      } else {
+        for(int i = 0; i < 3; ++i)
+          c += (is_hull_[t.edge[i]] ? Interval(1) : Interval(0.5)) * interval_length(t.v[i], t.v[(i + 1) % 3]);
+        c /= S;
+      }
+      Interval d = c;
+      for(int k = lp_.column_start[j]; k < lp_.column_start[j + 1]; ++k)
+        d -= Interval(lp_.value[k]) * Interval(y[lp_.row_index[k]]);
+      if(d.inf() < 0) lb += Interval(d.inf());
+    }
+    return (lb * S).inf();
+  }
+
+  std::vector<Point_2> input_;
+  internal::Indexed_points_2<Kernel> pts_;
+  Mwt_options options_;
+  std::vector<int> hull_;
+  std::unique_ptr<internal::Point_grid_2> grid_;
+  double scale_ = 1, upper_weight_ = 0;
+  bool triangles_done_ = false, lp_done_ = false;
+  std::vector<Edge> edges_;
+  std::unique_ptr<internal::Edge_index> index_;
+  std::vector<char> is_hull_, row_is_hull_;
+  std::vector<internal::Lp_triangle> triangles_;
+  std::vector<int> row_of_edge_;
+  std::vector<double> edge_length_;
+  Sparse_linear_program lp_;
+  Mwt_statistics stats_;
+};
+
+} // namespace Minimum_weight_triangulation_2
+} // namespace CGAL
+
+#endif // CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MINIMUM_WEIGHT_TRIANGULATION_LP_2_H

@@ -1,0 +1,103 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Options, status and result record of minimum_weight_triangulation_2().
+
+#ifndef CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MWT_RESULT_H
+#define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MWT_RESULT_H
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Minimum_weight_triangulation_2 {
+
+/// Length of an edge: Euclidean (default), Manhattan, or maximum norm.
+enum class Edge_metric { L2, L1, Linf };
+
+/// Which edges may carry triangles. `diamond` is valid for the Euclidean metric only.
+enum class Pruning { automatic, none, diamond };
+
+/// Built-in LP solver models.
+enum class Lp_solver_choice { automatic, clp, glpk, exact };
+
+/*!
+  \brief Outcome of a run.
+
+  - `certified_optimal`: the LP optimum is integral, the triangulation passed the exact validation, and a
+    dual bound computed in interval arithmetic (costs are sums of square roots) proves that no
+    triangulation is lighter by more than `certificate_tolerance` (relative).
+  - `optimal_after_branch_and_bound`: the LP optimum was fractional; the binary program solved by GLPK's
+    branch and cut (floating point, gap 0) gave this triangulation, validated exactly. `lower_bound` is the
+    rigorous LP bound.
+  - `optimal_uncertified`: an integral LP optimum and a valid triangulation whose dual bound could not be
+    certified (solver duals too inaccurate).
+  - `fractional_bound_only`: the LP optimum is fractional and was not resolved; no triangulation,
+    `lower_bound` holds.
+  - `solver_failed`: the LP/MIP solver failed; `message` says how.
+*/
+enum class Mwt_status { certified_optimal, optimal_after_branch_and_bound, optimal_uncertified, fractional_bound_only, solver_failed };
+
+inline const char* to_string(Mwt_status s)
+{
+  switch(s) {
+    case Mwt_status::certified_optimal: return "certified_optimal";
+    case Mwt_status::optimal_after_branch_and_bound: return "optimal_after_branch_and_bound";
+    case Mwt_status::optimal_uncertified: return "optimal_uncertified";
+    case Mwt_status::fractional_bound_only: return "fractional_bound_only";
+    default: return "solver_failed";
+  }
+}
+
+/// Parameters of minimum_weight_triangulation_2().
+struct Mwt_options
+{
+  Edge_metric metric = Edge_metric::L2;
+  /// If set, replaces the metric: weight of the triangle (a, b, c), given as coordinates, must be > 0.
+  /// The certificate then uses floating-point arithmetic only.
+  std::function<double(double, double, double, double, double, double)> triangle_weight;
+  Pruning pruning = Pruning::automatic;             ///< automatic: diamond for L2, none otherwise
+  Lp_solver_choice solver = Lp_solver_choice::automatic;   ///< automatic: CLP, else GLPK
+  bool resolve_fractional = true;                  ///< run branch and bound (GLPK) on a fractional LP optimum
+  double branch_and_bound_time_limit = 0;          ///< seconds, 0: none
+  double certificate_tolerance = 1e-9;             ///< relative gap accepted by the certificate
+  double integrality_tolerance = 1e-6;
+  bool validate = true;                            ///< exact validation of the output triangulation
+  /// Progress/cancel callback `bool(const char* stage, double fraction)`; see CGAL/MDCS/progress.h.
+  std::function<bool(const char*, double)> progress;
+};
+
+/// Sizes and timings (seconds) of the stages of one run.
+struct Mwt_statistics
+{
+  std::size_t points = 0, hull_points = 0, candidate_edges = 0, empty_triangles = 0, lp_columns = 0,
+              lp_rows = 0, lp_nonzeros = 0, fractional_variables = 0;
+  long lp_iterations = 0;
+  double time_candidates = 0, time_triangles = 0, time_lp_build = 0, time_lp_solve = 0, time_certificate = 0,
+         time_branch_and_bound = 0, time_total = 0;
+};
+
+/// Result of minimum_weight_triangulation_2().
+struct Mwt_result
+{
+  Mwt_status status = Mwt_status::solver_failed;
+  std::vector<std::array<int, 3>> triangles;   ///< counter-clockwise index triples into the input
+  double weight = std::numeric_limits<double>::quiet_NaN();        ///< sum of edge lengths
+  double lower_bound = -std::numeric_limits<double>::infinity();   ///< rigorous lower bound of the MWT weight
+  double lp_objective = std::numeric_limits<double>::quiet_NaN();  ///< LP optimum, in input units
+  bool lp_integral = false;
+  bool lp_exact = false;                         ///< the LP optimum was verified in rational arithmetic
+  std::string solver, message;
+  Mwt_statistics statistics;
+
+  bool has_triangulation() const { return !triangles.empty(); }
+};
+
+} // namespace Minimum_weight_triangulation_2
+} // namespace CGAL
+
+#endif // CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MWT_RESULT_H

@@ -1,0 +1,89 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// convex_polygon_mwt_2(): the O(k^3) dynamic program (Klincsek) for the minimum weight triangulation of a
+// convex polygon.
+
+#ifndef CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_CONVEX_POLYGON_MWT_2_H
+#define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_CONVEX_POLYGON_MWT_2_H
+
+#include <CGAL/Minimum_weight_triangulation_2/Mwt_result.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/number_utils.h>
+
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Minimum_weight_triangulation_2 {
+
+/*!
+  \brief Minimum weight triangulation of a strictly convex polygon given by its vertices in
+  counter-clockwise order, by dynamic programming in O(k^3) time and O(k^2) memory.
+
+  Writes the k-2 triangles (index triples into the input, counter-clockwise) to `out` and returns the
+  weight (sum of all edge lengths, boundary included).
+  \throws std::invalid_argument when fewer than 3 vertices are given or the polygon is not strictly
+  convex and counter-clockwise (checked with the kernel's exact orientation).
+*/
+template <class PointRange, class OutputIterator>
+double convex_polygon_mwt_2(const PointRange& polygon, OutputIterator out, Edge_metric metric = Edge_metric::L2)
+{
+  typedef typename std::iterator_traits<decltype(std::begin(polygon))>::value_type Point_2;
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
+  const std::vector<Point_2> p(std::begin(polygon), std::end(polygon));
+  const int k = int(p.size());
+  if(k < 3) throw std::invalid_argument("convex_polygon_mwt_2: needs at least 3 vertices");
+  typename K::Orientation_2 orient = K().orientation_2_object();
+  for(int i = 0; i < k; ++i) {
+    if(orient(p[i], p[(i + 1) % k], p[(i + 2) % k]) != CGAL::LEFT_TURN)
+      throw std::invalid_argument("convex_polygon_mwt_2: the polygon is not strictly convex and counter-clockwise");
+    if(i >= 1 && i + 1 < k && orient(p[0], p[i], p[i + 1]) != CGAL::LEFT_TURN)
+      throw std::invalid_argument("convex_polygon_mwt_2: the polygon is not simple (it winds more than once)");
+  }
+  auto len = [&](int a, int b) {
+    const double dx = CGAL::to_double(p[b].x()) - CGAL::to_double(p[a].x());
+    const double dy = CGAL::to_double(p[b].y()) - CGAL::to_double(p[a].y());
+    if(!std::isfinite(dx) || !std::isfinite(dy)) throw std::invalid_argument("convex_polygon_mwt_2: non-finite coordinate");
+    switch(metric) {
+      case Edge_metric::L1: return std::abs(dx) + std::abs(dy);
+      case Edge_metric::Linf: return std::max(std::abs(dx), std::abs(dy));
+      default: return std::sqrt(dx * dx + dy * dy);
+    }
+  };
+  // D[i][j]: minimum total length of the diagonals triangulating the sub-polygon i, i+1, ..., j.
+  std::vector<double> D(std::size_t(k) * k, 0.0);
+  std::vector<int> best(std::size_t(k) * k, -1);
+  for(int gap = 2; gap < k; ++gap)
+    for(int i = 0; i + gap < k; ++i) {
+      const int j = i + gap;
+      double m = std::numeric_limits<double>::infinity();
+      for(int c = i + 1; c < j; ++c) {
+        const double v = D[i * k + c] + D[c * k + j] + (c > i + 1 ? len(i, c) : 0.0) + (j > c + 1 ? len(c, j) : 0.0);
+        if(v < m) { m = v; best[i * k + j] = c; }
+      }
+      D[i * k + j] = m;
+    }
+  std::vector<std::array<int, 2>> stack{{0, k - 1}};
+  while(!stack.empty()) {
+    const auto ij = stack.back();
+    stack.pop_back();
+    if(ij[1] - ij[0] < 2) continue;
+    const int c = best[ij[0] * k + ij[1]];
+    *out++ = std::array<int, 3>{ij[0], c, ij[1]};
+    stack.push_back({ij[0], c});
+    stack.push_back({c, ij[1]});
+  }
+  double perimeter = 0;
+  for(int i = 0; i < k; ++i) perimeter += len(i, (i + 1) % k);
+  return perimeter + D[k - 1];
+}
+
+} // namespace Minimum_weight_triangulation_2
+} // namespace CGAL
+
+#endif // CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_CONVEX_POLYGON_MWT_2_H

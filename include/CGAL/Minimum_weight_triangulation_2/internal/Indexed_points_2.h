@@ -1,0 +1,131 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The input points with double coordinates (for grids and weights), the kernel's exact orientation
+// predicate on indices, and a uniform grid for range queries.
+
+#ifndef CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_INDEXED_POINTS_2_H
+#define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_INDEXED_POINTS_2_H
+
+#include <CGAL/number_utils.h>
+#include <CGAL/enum.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Minimum_weight_triangulation_2 {
+namespace internal {
+
+template <class K>
+class Indexed_points_2
+{
+public:
+  typedef typename K::Point_2 Point_2;
+
+  Indexed_points_2(const std::vector<Point_2>& p, const K& k = K())
+    : points_(p), orientation_(k.orientation_2_object())
+  {
+    x_.resize(p.size());
+    y_.resize(p.size());
+    for(std::size_t i = 0; i < p.size(); ++i) {
+      x_[i] = CGAL::to_double(p[i].x());
+      y_[i] = CGAL::to_double(p[i].y());
+    }
+  }
+
+  std::size_t size() const { return points_.size(); }
+  double x(int i) const { return x_[i]; }
+  double y(int i) const { return y_[i]; }
+  const Point_2& point(int i) const { return points_[i]; }
+
+  /// Exact sign of the orientation of (a, b, c): +1 left turn, -1 right turn, 0 collinear.
+  int orientation(int a, int b, int c) const
+  {
+    const CGAL::Orientation o = orientation_(points_[a], points_[b], points_[c]);
+    return o == CGAL::LEFT_TURN ? 1 : (o == CGAL::RIGHT_TURN ? -1 : 0);
+  }
+
+  /// Exact: c lies strictly inside the segment ab (a != b).
+  bool strictly_between(int a, int b, int c) const
+  {
+    if(orientation(a, b, c) != 0) return false;
+    const Point_2 &A = points_[a], &B = points_[b], &C = points_[c];
+    if(A.x() != B.x())
+      return (A.x() < C.x() && C.x() < B.x()) || (B.x() < C.x() && C.x() < A.x());
+    return (A.y() < C.y() && C.y() < B.y()) || (B.y() < C.y() && C.y() < A.y());
+  }
+
+private:
+  const std::vector<Point_2>& points_;
+  typename K::Orientation_2 orientation_;
+  std::vector<double> x_, y_;
+};
+
+/// A uniform grid over the points' bounding box with about `per_cell` points per cell.
+class Point_grid_2
+{
+public:
+  template <class Points>
+  Point_grid_2(const Points& P, double per_cell = 2.0)
+  {
+    const std::size_t n = P.size();
+    xmin_ = ymin_ = HUGE_VAL;
+    double xmax = -HUGE_VAL, ymax = -HUGE_VAL;
+    for(std::size_t i = 0; i < n; ++i) {
+      xmin_ = std::min(xmin_, P.x(int(i))); xmax = std::max(xmax, P.x(int(i)));
+      ymin_ = std::min(ymin_, P.y(int(i))); ymax = std::max(ymax, P.y(int(i)));
+    }
+    const double w = std::max(xmax - xmin_, 1e-300), h = std::max(ymax - ymin_, 1e-300);
+    const double cells = std::max(1.0, double(n) / per_cell);
+    cell_ = std::sqrt(w * h / cells);
+    if(!(cell_ > 0) || !std::isfinite(cell_)) cell_ = std::max(w, h);
+    cell_ = std::max(cell_, std::max(w, h) / 4096.0);
+    nx_ = std::max(1, std::min(4096, int(w / cell_) + 1));
+    ny_ = std::max(1, std::min(4096, int(h / cell_) + 1));
+    start_.assign(std::size_t(nx_) * ny_ + 1, 0);
+    std::vector<int> cell_of(n);
+    for(std::size_t i = 0; i < n; ++i) {
+      cell_of[i] = cx(P.x(int(i))) + nx_ * cy(P.y(int(i)));
+      ++start_[cell_of[i] + 1];
+    }
+    for(std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    items_.resize(n);
+    std::vector<int> fill(start_.begin(), start_.end() - 1);
+    for(std::size_t i = 0; i < n; ++i) items_[fill[cell_of[i]]++] = int(i);
+  }
+
+  int cx(double x) const { return std::max(0, std::min(nx_ - 1, int(std::floor((x - xmin_) / cell_)))); }
+  int cy(double y) const { return std::max(0, std::min(ny_ - 1, int(std::floor((y - ymin_) / cell_)))); }
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  double cell_size() const { return cell_; }
+  const int* begin(int i, int j) const { return items_.data() + start_[i + nx_ * j]; }
+  const int* end(int i, int j) const { return items_.data() + start_[i + nx_ * j + 1]; }
+
+  /// Calls f(point index) for the points of the cells meeting the box (slightly enlarged); stops when f returns true.
+  template <class F>
+  bool any_in_box(double x0, double y0, double x1, double y1, F f) const
+  {
+    const double pad = 1e-9 * cell_;
+    const int i0 = cx(x0 - pad), i1 = cx(x1 + pad), j0 = cy(y0 - pad), j1 = cy(y1 + pad);
+    for(int j = j0; j <= j1; ++j)
+      for(int i = i0; i <= i1; ++i)
+        for(const int* it = begin(i, j); it != end(i, j); ++it)
+          if(f(*it)) return true;
+    return false;
+  }
+
+private:
+  double xmin_, ymin_, cell_;
+  int nx_, ny_;
+  std::vector<int> start_, items_;
+};
+
+} // namespace internal
+} // namespace Minimum_weight_triangulation_2
+} // namespace CGAL
+
+#endif // CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_INDEXED_POINTS_2_H
