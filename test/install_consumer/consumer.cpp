@@ -1,6 +1,11 @@
-// Uses an installed MDCS: a two-cell min cut and a tiny curve problem.
+// Uses an installed MDCS: a two-cell min cut, a tiny curve problem and, with the LP solvers of
+// MDCS::LP_solvers, the minimum weight triangulation of a square and its centre.
 #include <CGAL/Min_cut.h>
 #include <CGAL/Variational_minimization.h>
+#if defined(MDCS_HAS_CLP) || defined(MDCS_HAS_GLPK)
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Minimum_weight_triangulation_2.h>
+#endif
 #include <cmath>
 #include <iostream>
 
@@ -21,5 +26,14 @@ int main()
   const auto curve = VM::minimize_curve_functional_2(arrangement, weights, problem);
 
   std::cout << "cut " << cut.value << ", diagonal " << curve.energy << "\n";
-  return (cut.value == 1.5 && std::abs(curve.energy - std::sqrt(2.0)) < 1e-12) ? 0 : 1;
+  bool ok = cut.value == 1.5 && std::abs(curve.energy - std::sqrt(2.0)) < 1e-12;
+#if defined(MDCS_HAS_CLP) || defined(MDCS_HAS_GLPK)
+  // The centre is collinear with both diagonals: the only triangulation joins it to the four corners.
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 Point;
+  const std::vector<Point> square{Point(0, 0), Point(1, 0), Point(1, 1), Point(0, 1), Point(0.5, 0.5)};
+  const auto mwt = CGAL::Minimum_weight_triangulation_2::minimum_weight_triangulation_2(square);
+  std::cout << "square + centre: MWT weight " << mwt.weight << ", " << mwt.triangles.size() << " triangles\n";
+  ok = ok && mwt.has_triangulation() && mwt.triangles.size() == 4 && std::abs(mwt.weight - (4 + 2 * std::sqrt(2.0))) < 1e-9;
+#endif
+  return ok ? 0 : 1;
 }
