@@ -5,8 +5,8 @@
 //
 // usage: bench_silhouette [--csv FILE] [--views N] [--frames N] [--large] [--mesh FILE --fine-faces N]...
 //   Default meshes (CGAL's demo data, MDCS_CGAL_MESH_DIR): bunny00.off simplified to 20,000 faces
-//   (coarse 1,000), and armadillo.off (52k faces, coarse 1,000). --large adds bunny00.off after two
-//   Loop subdivisions (~1.2M faces, coarse 1,000). --mesh FILE adds a mesh of your own.
+//   (coarse 1,000), bunny00.off as is (75k faces, coarse 1,000), and armadillo.off (52k faces, coarse
+//   1,000). --large adds bunny00.off after two Loop subdivisions (~1.2M faces, coarse 1,000). --mesh FILE adds a mesh of your own.
 #include <mdcs_bench.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -70,8 +70,9 @@ int main(int argc, char** argv)
   if(cases.empty()) {
     if(dir.empty()) { std::fprintf(stderr, "no CGAL demo meshes (MDCS_CGAL_MESH_DIR is empty): give --mesh FILE\n"); return 2; }
     Case bunny; bunny.name = "bunny 20k"; bunny.path = dir + "/bunny00.off"; bunny.fine_faces = 20000;
+    Case full; full.name = "bunny 75k"; full.path = dir + "/bunny00.off";
     Case arma; arma.name = "armadillo"; arma.path = dir + "/armadillo.off";
-    cases = {bunny, arma};
+    cases = {bunny, full, arma};
     if(large) { Case big; big.name = "bunny Loop x2"; big.path = dir + "/bunny00.off"; big.subdivisions = 2; cases.push_back(big); }
   }
 

@@ -327,3 +327,50 @@ TEST_CASE("Silhouette_simplifier_3: CGAL's elephant, both methods over a rotatio
   CHECK(mapped_total < fine_total);
   CHECK(picked_total < fine_total);
 }
+
+TEST_CASE("temporal coherence: hysteresis of loop picking", "[silhouette][coherence][picking]")
+{
+  Fixture fx(noisy_sphere(4, 0.06), 300);
+  Simplifier& s = *fx.simplifier;
+  double incoherence[2];
+  for(int remedy = 0; remedy < 2; ++remedy) {
+    std::vector<std::vector<std::uint32_t>> fine_sets, picked_sets;
+    SS::Silhouette_frame prev, cur;
+    SS::Loop_picking_options o;
+    o.min_loop_edges = 3;
+    o.previous_bias = remedy ? 0.5 : 1.0;
+    for(int t = 0; t < 24; ++t) {
+      s.extract(orbit_view(0.01 * t), cur);
+      s.pick_loops(cur, o, t > 0 ? &prev : nullptr);
+      // The remedy keeps the invariants: distinct fine silhouette loops, and the reported error is the
+      // true (unbiased) sum of squared distances, recomputed here by brute force.
+      std::set<std::uint32_t> distinct(cur.picked.begin(), cur.picked.end());
+      REQUIRE(distinct.size() == cur.picked.size());
+      double error = 0;
+      for(const auto& cl : cur.coarse_loops)
+        for(std::uint32_t h : cl.halfedges) {
+          const Point_3& c = s.coarse().points[s.coarse().source[h]];
+          double best = s.diagonal() * s.diagonal();
+          for(std::uint32_t l : cur.picked)
+            for(std::uint32_t g : cur.fine_loops[l].halfedges)
+              best = std::min(best, CGAL::squared_distance(c, s.fine().points[s.fine().source[g]]));
+          error += best;
+        }
+      CHECK(cur.picking_error == Approx(error).epsilon(1e-5));
+      std::vector<std::uint32_t> f, p;
+      for(std::uint32_t h : cur.fine_silhouette) f.push_back(s.fine().edge(h));
+      for(std::uint32_t h : cur.picked_halfedges()) p.push_back(s.fine().edge(h));
+      fine_sets.push_back(f);
+      picked_sets.push_back(p);
+      std::swap(prev, cur);
+    }
+    incoherence[remedy] = SS::temporal_incoherence(picked_sets, fine_sets);
+  }
+  INFO("picking incoherence without / with hysteresis: " << incoherence[0] << " / " << incoherence[1]);
+  CHECK(incoherence[1] < 0.95 * incoherence[0]); // measured: 1.95 -> 1.73
+  SS::Silhouette_frame f;
+  s.extract(orbit_view(0), f);
+  SS::Loop_picking_options bad;
+  bad.previous_bias = 1.5;
+  CHECK_THROWS_AS(s.pick_loops(f, bad, &f), std::invalid_argument);
+}

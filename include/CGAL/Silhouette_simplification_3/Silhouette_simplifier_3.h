@@ -152,9 +152,10 @@ public:
   void pick_loops(Silhouette_frame& frame, const Loop_picking_options& options = Loop_picking_options(),
                   const Silhouette_frame* previous = nullptr)
   {
-    if(!(options.threshold >= 0) || !(options.min_relative_gain >= 0) || !(options.previous_bias > 0))
+    if(!(options.threshold >= 0) || !(options.min_relative_gain >= 0) ||
+       !(options.previous_bias > 0 && options.previous_bias <= 1))
       throw std::invalid_argument("MDCS: Silhouette_simplifier_3::pick_loops: threshold and min_relative_gain must "
-                                  "be >= 0 and previous_bias > 0");
+                                  "be >= 0 and previous_bias in (0, 1]");
     coarse_points_.clear();
     for(const auto& loop : frame.coarse_loops)
       for(std::uint32_t h : loop.halfedges) coarse_points_.push_back(coarse_.points[coarse_.source[h]]);

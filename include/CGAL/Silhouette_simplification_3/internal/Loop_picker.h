@@ -27,8 +27,11 @@ struct Loop_picking_options
   double threshold = 0.004;
   /// Also stop when the best loop lowers the error by less than this fraction of the current error.
   double min_relative_gain = 0.002;
-  /// Temporal-coherence remedy: the distances of a fine loop that shares a fraction s of its edges
-  /// with the previous frame's picked loops are multiplied by 1 - (1 - previous_bias) s (1 = no bias).
+  /// Temporal-coherence remedy (hysteresis, 1 = none, must be in (0, 1]): for the greedy choices and the
+  /// stopping tests, the distances of a fine loop that shares a fraction s of its edges with the previous
+  /// frame's picked loops are multiplied by 1 - (1 - previous_bias) s; once the search stops, the loops
+  /// with s >= 1/2 that still lower this biased error by `min_relative_gain` are kept too. The reported
+  /// `picking_error` uses the true distances.
   double previous_bias = 1.0;
 };
 
@@ -59,6 +62,9 @@ double pick_loops(const Indexed_mesh<Point_3>& fine, const std::vector<Point_3>&
     cy[c] = CGAL::to_double(coarse_points[c].y());
     cz[c] = CGAL::to_double(coarse_points[c].z());
   }
+  // Temporal-coherence remedy: the distances of loop i are scaled by scale[i] <= 1 for the choices; the
+  // reported error uses the true distances.
+  std::vector<double> share(nl, 0.0), scale(nl, 1.0);
   for(std::size_t i = 0; i < nl; ++i) {
     float* row = &table[i * nc];
     const auto& loop = loops[candidates[i]];
@@ -73,37 +79,63 @@ double pick_loops(const Indexed_mesh<Point_3>& fine, const std::vector<Point_3>&
         if(d < row[c]) row[c] = d;
       }
     }
-    if(previous_edge_flag && options.previous_bias != 1.0 && shared > 0) {
-      const double f = 1 - (1 - options.previous_bias) * double(shared) / double(loop.halfedges.size());
-      for(std::size_t c = 0; c < nc; ++c) row[c] = float(row[c] * f);
+    share[i] = double(shared) / double(loop.halfedges.size());
+    if(previous_edge_flag && shared > 0) {
+      scale[i] = 1 - (1 - options.previous_bias) * share[i];
+      for(std::size_t c = 0; c < nc; ++c) row[c] = float(row[c] * scale[i]);
     }
   }
 
-  std::vector<double> best(nc, cap);
+  std::vector<double> best(nc, cap), true_best(nc, cap);
   std::vector<char> taken(nl, 0);
   double error = double(nc) * cap;
   const double goal = double(nc) * (options.threshold * diagonal) * (options.threshold * diagonal);
+  auto gain_of = [&](std::size_t i) {
+    const float* row = &table[i * nc];
+    double gain = 0;
+    for(std::size_t c = 0; c < nc; ++c)
+      if(row[c] < best[c]) gain += best[c] - row[c];
+    return gain;
+  };
+  auto take = [&](std::size_t i) {
+    taken[i] = 1;
+    picked.push_back(candidates[i]);
+    const float* row = &table[i * nc];
+    error = 0;
+    for(std::size_t c = 0; c < nc; ++c) {
+      best[c] = std::min(best[c], double(row[c]));
+      true_best[c] = std::min(true_best[c], double(row[c]) / scale[i]);
+      error += best[c];
+    }
+  };
   while(error > goal) {
     double best_gain = 0;
     std::size_t best_i = nl;
     for(std::size_t i = 0; i < nl; ++i) {
       if(taken[i]) continue;
-      const float* row = &table[i * nc];
-      double gain = 0;
-      for(std::size_t c = 0; c < nc; ++c)
-        if(row[c] < best[c]) gain += best[c] - row[c];
+      const double gain = gain_of(i);
       if(gain > best_gain) { best_gain = gain; best_i = i; }
     }
     if(best_i == nl || best_gain < options.min_relative_gain * error) break;
-    taken[best_i] = 1;
-    picked.push_back(candidates[best_i]);
-    const float* row = &table[best_i * nc];
-    error = 0;
-    for(std::size_t c = 0; c < nc; ++c) {
-      best[c] = std::min(best[c], double(row[c]));
-      error += best[c];
-    }
+    take(best_i);
   }
+  // Hysteresis: once the search stops, keep the loops that were mostly picked in the previous frame and
+  // still lower the (biased) error by `min_relative_gain`.
+  if(previous_edge_flag && options.previous_bias < 1)
+    for(bool added = true; added;) {
+      added = false;
+      for(std::size_t i = 0; i < nl; ++i)
+        if(!taken[i] && share[i] >= 0.5) {
+          const double gain = gain_of(i);
+          if(gain > 0 && gain >= options.min_relative_gain * error) {
+            take(i);
+            added = true;
+          }
+        }
+    }
+  if(!previous_edge_flag) return error;
+  error = 0;
+  for(std::size_t c = 0; c < nc; ++c) error += true_best[c];
   return error;
 }
 
