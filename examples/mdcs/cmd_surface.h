@@ -10,6 +10,7 @@
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
+#include <CGAL/Variational_minimization/refine_surface_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
 #include <CGAL/Variational_minimization/surface_facet_weights_3.h>
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
@@ -51,6 +52,8 @@ inline const char* surface_usage()
     "  --max-slope S       slope bound of slope-limited planes (default 3)\n"
     "  --pencil-fraction F share of the planes through the boundary segments (default 0.2)\n"
     "  --plane-selection K plane selection with K iterations (default 1: a single solve)\n"
+    "  --refine R          adaptive refinement: R runs give an envelope, a new arrangement of N planes keeps\n"
+    "                      their optima's planes and adds planes inside it (default 0: off)\n"
     "  --relax             continue with local relaxation on 20^2, 40^2, 80^2 grids (L-BFGS)\n"
     "  --engine pf|pr|bk   max-flow engine: pseudoflow (default), push-relabel, Boykov-Kolmogorov\n"
     "  --seed S            random seed (default 1)\n"
@@ -68,6 +71,7 @@ struct Surface_settings
   double max_slope = 3;
   double pencil_fraction = 0.2;
   long plane_selection = 1;
+  long refine = 0;
   bool relax = false;
   std::string engine = "pf";
   long seed = 1;
@@ -83,6 +87,8 @@ struct Surface_run
   VM3::Relaxed_surface_3 relaxed;
   bool has_relaxed = false;
   std::vector<double> selection_energies;
+  std::vector<double> refine_energies;
+  std::size_t refine_below = 0, refine_above = 0;
   double exact = NAN;
   std::size_t cells = 0, facets = 0, vertices = 0, pencils = 0;
   double seconds_build = 0, seconds_weights = 0, seconds_cut = 0, seconds_relax = 0, seconds_total = 0;
@@ -217,6 +223,8 @@ inline Surface_settings parse_surface_settings(const Options& o)
   s.pencil_fraction = o.number("pencil-fraction", s.pencil_fraction);
   if(!(s.pencil_fraction >= 0 && s.pencil_fraction <= 1)) throw Usage_error("--pencil-fraction must be in [0, 1]");
   s.plane_selection = o.integer("plane-selection", s.plane_selection, 1);
+  s.refine = o.integer("refine", s.refine, 0);
+  if(s.refine > 0 && s.plane_selection > 1) throw Usage_error("--refine and --plane-selection exclude each other");
   s.relax = o.has("relax");
   o.text("relax", "");
   s.engine = o.text("engine", s.engine);
@@ -264,6 +272,21 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
   po.seed = std::uint64_t(s.seed);
   run.pencils = VM3::surface_pencil_count_3(run.problem, std::size_t(s.planes), po);
   auto solve_once = [&](auto engine) {
+    if(s.refine > 0) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const VM3::Surface_refinement_result_3 r = VM3::refine_surface_3(
+        run.problem, G, std::size_t(s.planes), int(s.refine), po, 0.0, 1, engine, std::ref(progress));
+      run.seconds_cut = seconds_since(t0);
+      run.surface = r.surface;
+      run.refine_energies = r.run_energies;
+      run.refine_below = r.cells_below;
+      run.refine_above = r.cells_above;
+      run.cells = r.cells;
+      const VM3::Plane_arrangement_3 A(r.planes);
+      run.facets = A.number_of_facets();
+      run.vertices = A.number_of_vertices();
+      return;
+    }
     if(s.plane_selection > 1) {
       const auto t0 = std::chrono::steady_clock::now();
       const VM3::Plane_selection_result_3 r =
@@ -352,6 +375,12 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
     sum << "plane selection   energies";
     for(double e : run.selection_energies) sum << ' ' << e;
     sum << "\n";
+  }
+  if(!run.refine_energies.empty()) {
+    sum << "refinement        run energies";
+    for(double e : run.refine_energies) sum << ' ' << e;
+    sum << "; refined arrangement: " << run.refine_below << " cells tied below the envelope, " << run.refine_above
+        << " above\n";
   }
   if(std::isfinite(run.exact))
     sum << "exact area        " << run.exact << " (relative error " << std::setprecision(3)

@@ -25,6 +25,7 @@
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/refine_surface_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
 #include <CGAL/Variational_minimization/surface_facet_weights_3.h>

@@ -143,6 +143,30 @@ TEST_CASE("Plane_arrangement_3: random planes keep every invariant", "[variation
   check_complex(B, false);
 }
 
+TEST_CASE("Plane_arrangement_3: insertions after a construction rebuild the released tree",
+          "[variational][surface][arrangement]")
+{
+  for(std::uint64_t seed : {4u, 5u}) {
+    const std::vector<VM::Lattice_plane_3> planes = random_planes(40, seed);
+    const Arr all(planes);
+    CHECK(all.number_of_tree_nodes() == 0); // released by the constructor
+    Arr A(std::vector<VM::Lattice_plane_3>(planes.begin(), planes.begin() + 20));
+    Arr C; // incremental from the box: the tree is kept
+    for(std::size_t i = 0; i < planes.size(); ++i) {
+      if(i >= 20) CHECK(A.insert_plane(planes[i]));
+      CHECK(C.insert_plane(planes[i]));
+    }
+    CHECK(A.number_of_tree_nodes() == 2 * A.number_of_cells() - 1);
+    CHECK(A.number_of_cells() == all.number_of_cells());
+    CHECK(A.number_of_facets() == all.number_of_facets());
+    CHECK(A.number_of_vertices() == all.number_of_vertices());
+    CHECK(C.number_of_cells() == all.number_of_cells());
+    CHECK(C.number_of_facets() == all.number_of_facets());
+    check_complex(A, true);
+    check_complex(C, false);
+  }
+}
+
 TEST_CASE("Plane_arrangement_3: cell count of a simple arrangement", "[variational][surface][arrangement]")
 {
   // Planes through points near the centre with well-spread normals: all triple intersections inside the box, so

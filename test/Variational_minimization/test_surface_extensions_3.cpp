@@ -1,10 +1,12 @@
 // Tests of the extensions of the bivariate solver: relaxation (local L-BFGS on grids) against the exact Scherk
 // area and the exact plane, plane selection (the energy never increases), and the blob problem with many local
 // minima: the global solve (with plane selection, relaxed) is at least as good as the best of 100 random-start
-// local descents.
+// local descents. Adaptive refinement: never worse than its runs, and the envelope restriction only removes
+// candidates.
 #include <catch2/catch.hpp>
 
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/refine_surface_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
 #include <CGAL/Variational_minimization/surface_facet_weights_3.h>
@@ -87,6 +89,44 @@ TEST_CASE("select_planes_3: the energy never increases", "[variational][surface]
   CHECK(r.energies.back() < r.energies.front()); // and in this run it improves
   CHECK(r.surface.energy == *std::min_element(r.energies.begin(), r.energies.end()));
   CHECK_THROWS_AS(VM::select_planes_3(P, VM::Area_functional_3(), 50, 0, o), std::invalid_argument);
+}
+
+TEST_CASE("refine_surface_3: no worse than its runs; the envelope only restricts", "[variational][surface][refinement]")
+{
+  VM::Surface_problem_3 P;
+  const double a = 1.2;
+  P.domain = CGAL::Bbox_2(-a, -a, a, a);
+  P.zmin = -1.1;
+  P.zmax = 1.1;
+  P.boundary_segments_per_side = 4;
+  P.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
+  VM::Surface_plane_options_3 o;
+  o.distribution = VM::Plane_distribution_3::slope_limited;
+  o.max_slope = 3;
+  o.pencil_fraction = 0.2;
+  for(double margin : {0.0, 0.05}) {
+    const VM::Surface_refinement_result_3 R = VM::refine_surface_3(P, VM::Area_functional_3(), 70, 3, o, margin);
+    REQUIRE(R.surface.is_feasible);
+    REQUIRE(R.run_energies.size() == 3);
+    const double best_run = *std::min_element(R.run_energies.begin(), R.run_energies.end());
+    CHECK(R.surface.energy <= best_run * (1 + 1e-9));
+    CHECK(std::abs(R.surface.energy - R.surface.solver_value) <= 1e-9 * R.surface.energy);
+    CHECK(std::abs(R.surface.projected_area - P.domain_area()) <= 1e-9 * P.domain_area());
+    CHECK(R.planes.size() == std::max<std::size_t>(70, R.kept_planes));
+    CHECK(R.kept_planes > 0);
+    CHECK(R.cells_below > 0);
+    CHECK(R.cells_above > 0);
+    CHECK(R.cells_below + R.cells_above < R.cells);
+    // Without the envelope, the same arrangement can only do better or equal.
+    const VM::Plane_arrangement_3 A(R.planes);
+    CHECK(A.number_of_cells() == R.cells);
+    const auto w = VM::surface_facet_weights_3(A, P, VM::Area_functional_3());
+    const VM::Minimal_surface_3 free_surface = VM::minimize_surface_functional_3(A, w, P);
+    CHECK(free_surface.energy <= R.surface.energy * (1 + 1e-9));
+  }
+  CHECK_THROWS_AS(VM::refine_surface_3(P, VM::Area_functional_3(), 40, 0, o), std::invalid_argument);
+  CHECK_THROWS_AS(VM::refine_surface_3(P, VM::Area_functional_3(), 40, 2, o, -1.0), std::invalid_argument);
+  CHECK_THROWS_AS(VM::refine_surface_3(P, VM::Area_functional_3(), 40, 2, o, std::nan("")), std::invalid_argument);
 }
 
 TEST_CASE("blob problem: the global solve beats 100 random-start local descents", "[variational][surface][blobs]")

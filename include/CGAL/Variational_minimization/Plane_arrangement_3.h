@@ -8,6 +8,7 @@
 
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Variational_minimization/internal/plane_arrangement_predicates_3.h>
+#include <CGAL/Variational_minimization/internal/pooled_index_lists_3.h>
 
 #include <array>
 #include <cstddef>
@@ -47,7 +48,10 @@ template <class Arrangement> class Plane_arrangement_builder_3;
   Only `point()` is an approximation.
 
   **Storage.** A facet keeps its plane, its two cells and its polygon as (vertex, plane of the edge to the next
-  vertex) pairs; a cell keeps its facet list; a vertex keeps its three planes and its approximate point.
+  vertex) pairs; a cell keeps its facet list; a vertex keeps its three planes and its approximate point. The
+  polygons and the facet lists are pooled: during construction they live in large chunks with free lists (no
+  allocation per list), afterwards they are packed in compressed-row form (one 32-bit offset per list into one
+  array). The scratch data of the construction is released at its end (and rebuilt by a later `insert_plane()`).
 
   **Planes.** Planes 0-5 are the box walls `X = 0`, `X = L`, `Y = 0`, `Y = L`, `Z = 0`, `Z = L`; input plane
   `i` is plane `6 + i`. An input plane that duplicates an earlier plane or a wall, or misses the open box, is
@@ -66,6 +70,18 @@ public:
   static constexpr std::int64_t lattice_size = std::int64_t(1) << 16;
   /// The number of wall planes, which come first.
   static constexpr std::size_t number_of_walls = 6;
+
+  /// A read-only range of indices (a cell's facets), valid until the arrangement changes.
+  struct Index_range
+  {
+    const std::uint32_t* first;
+    const std::uint32_t* last;
+    const std::uint32_t* begin() const { return first; }
+    const std::uint32_t* end() const { return last; }
+    std::size_t size() const { return std::size_t(last - first); }
+    bool empty() const { return first == last; }
+    std::uint32_t operator[](std::size_t k) const { return first[k]; }
+  };
 
   /// A facet: a convex polygon on `plane`; `negative_cell` lies where the plane's left-hand side is negative.
   struct Facet
@@ -106,17 +122,18 @@ public:
   /// The polygon of facet `f`: its vertices in cyclic order.
   std::vector<Vertex_index> facet_vertices(Facet_index f) const
   {
-    const std::vector<std::uint32_t>& p = polygons_[f];
-    std::vector<Vertex_index> out(p.size() / 2);
+    const std::uint32_t* p = polygons_.begin(f);
+    std::vector<Vertex_index> out(polygons_.size(f) / 2);
     for(std::size_t i = 0; i < out.size(); ++i) out[i] = p[2 * i];
     return out;
   }
-  std::size_t facet_degree(Facet_index f) const { return polygons_[f].size() / 2; }
-  Vertex_index facet_vertex(Facet_index f, std::size_t k) const { return polygons_[f][2 * k]; }
+  std::size_t facet_degree(Facet_index f) const { return polygons_.size(f) / 2; }
+  Vertex_index facet_vertex(Facet_index f, std::size_t k) const { return polygons_.at(f, 2 * k); }
   /// The plane of the edge from `facet_vertex(f, k)` to the next vertex.
-  Plane_index facet_edge_plane(Facet_index f, std::size_t k) const { return polygons_[f][2 * k + 1]; }
+  Plane_index facet_edge_plane(Facet_index f, std::size_t k) const { return polygons_.at(f, 2 * k + 1); }
 
-  const std::vector<Facet_index>& cell_facets(Cell_index c) const { return cell_facets_[c]; }
+  /// The facets of cell `c`.
+  Index_range cell_facets(Cell_index c) const { return Index_range{cell_facets_.begin(c), cell_facets_.end(c)}; }
 
   /// A double approximation of the vertex in lattice coordinates (relative error about 2^-52).
   const std::array<double, 3>& point(Vertex_index v) const { return points_[v]; }
@@ -134,7 +151,8 @@ public:
     return internal::exact_side(internal::intersect_planes(planes_[t[0]], planes_[t[1]], planes_[t[2]]), p);
   }
 
-  /// The number of nodes of the BSP tree (leaves are the cells).
+  /// The number of nodes of the BSP tree (leaves are the cells). The constructor from a list of planes releases
+  /// the tree at its end (0 nodes); `insert_plane()` then rebuilds one (a bounding-volume tree of the cells).
   std::size_t number_of_tree_nodes() const { return nodes_.size(); }
 
   /// An estimate of the memory held by the arrangement, in bytes (containers' capacities).
@@ -152,14 +170,14 @@ private:
   std::vector<Lattice_plane_3> planes_;
   std::vector<unsigned char> used_;
   std::vector<Facet> facets_;
-  std::vector<std::vector<std::uint32_t>> polygons_;       // per facet: v0, e0, v1, e1, ...
-  std::vector<std::vector<Facet_index>> cell_facets_;
+  internal::Pooled_index_lists_3 polygons_{2};    // per facet: v0, e0, v1, e1, ...
+  internal::Pooled_index_lists_3 cell_facets_{4}; // per cell: its facets
   std::vector<std::array<Plane_index, 3>> vertex_planes_;
   std::vector<std::array<double, 3>> points_;
   std::vector<Tree_node> nodes_;
   std::vector<std::uint32_t> node_of_cell_;
   // Construction scratch: the side of each vertex with respect to the plane being inserted (valid when its
-  // epoch is the current one).
+  // epoch is the current one); released after the construction, regrown by insert_plane().
   std::vector<std::uint32_t> side_epoch_;
   std::vector<signed char> side_cache_;
   std::uint32_t epoch_ = 0;

@@ -51,7 +51,7 @@ public:
       a_.side_epoch_.push_back(0);
       a_.side_cache_.push_back(0);
     }
-    a_.cell_facets_.emplace_back();
+    a_.cell_facets_.add_list();
     for(std::uint32_t t = 0; t < 3; ++t) {
       const std::uint32_t u = (t + 1) % 3, w = (t + 2) % 3;
       for(std::uint32_t high = 0; high < 2; ++high) {
@@ -62,8 +62,8 @@ public:
                                            corner(1, 1), 2 * w + 1, corner(0, 1), 2 * u};
         const std::uint32_t f = std::uint32_t(a_.facets_.size());
         a_.facets_.push_back(Facet{2 * t + high, high ? 0u : null, high ? null : 0u});
-        a_.polygons_.push_back(std::move(poly));
-        a_.cell_facets_[0].push_back(f);
+        a_.polygons_.assign(a_.polygons_.add_list(), poly.data(), poly.data() + poly.size());
+        a_.cell_facets_.push_back(0, f);
       }
     }
     a_.nodes_.emplace_back();
@@ -81,6 +81,11 @@ public:
       return false; // a duplicate of an earlier plane or of a wall
     h_ = std::uint32_t(a_.planes_.size() - 1);
     ++a_.epoch_;
+    if(a_.side_epoch_.size() < a_.vertex_planes_.size()) { // released after a construction
+      a_.side_epoch_.resize(a_.vertex_planes_.size(), 0);
+      a_.side_cache_.resize(a_.vertex_planes_.size(), 0);
+    }
+    if(a_.nodes_.empty()) rebuild_tree();
     std::vector<std::uint32_t> candidates;
     collect_candidates(p, candidates);
     bool used = false;
@@ -129,9 +134,10 @@ private:
   bool is_crossed(std::uint32_t c)
   {
     bool pos = false, neg = false;
-    for(std::uint32_t f : a_.cell_facets_[c]) {
-      const std::vector<std::uint32_t>& poly = a_.polygons_[f];
-      for(std::size_t k = 0; k < poly.size(); k += 2) {
+    for(const std::uint32_t* fi = a_.cell_facets_.begin(c); fi != a_.cell_facets_.end(c); ++fi) {
+      const std::uint32_t* poly = a_.polygons_.begin(*fi);
+      const std::size_t n = a_.polygons_.size(*fi);
+      for(std::size_t k = 0; k < n; k += 2) {
         const int s = side(poly[k]);
         pos = pos || s > 0;
         neg = neg || s < 0;
@@ -190,20 +196,23 @@ private:
 
   void split_cell(std::uint32_t c)
   {
-    check_size(a_.facets_.size() + a_.cell_facets_[c].size(), "facets");
+    check_size(a_.facets_.size() + a_.cell_facets_.size(c), "facets");
     check_size(a_.cell_facets_.size(), "cells");
     const std::uint32_t cp = std::uint32_t(a_.cell_facets_.size());
-    a_.cell_facets_.emplace_back();
+    a_.cell_facets_.add_list();
     const std::uint32_t nf = std::uint32_t(a_.facets_.size());
     a_.facets_.push_back(Facet{h_, c, cp});
-    a_.polygons_.emplace_back();
-    std::vector<std::uint32_t> old;
-    old.swap(a_.cell_facets_[c]);
-    std::vector<std::uint32_t> neg, pos;
+    a_.polygons_.add_list();
+    std::vector<std::uint32_t>& old = old_;
+    old.assign(a_.cell_facets_.begin(c), a_.cell_facets_.end(c));
+    std::vector<std::uint32_t>& neg = neg_;
+    std::vector<std::uint32_t>& pos = pos_;
+    neg.clear();
+    pos.clear();
     chords_.clear();
     for(std::uint32_t f : old) {
       const std::uint32_t pf = a_.facets_[f].plane;
-      poly_.assign(a_.polygons_[f].begin(), a_.polygons_[f].end());
+      poly_.assign(a_.polygons_.begin(f), a_.polygons_.end(f));
       const std::vector<std::uint32_t>& poly = poly_;
       const std::size_t n = poly.size() / 2;
       bool any_pos = false, any_neg = false;
@@ -229,7 +238,10 @@ private:
         aug_.push_back({{v, e, std::uint32_t(s + 1)}});
         if(s * t < 0) aug_.push_back({{split_vertex(v, u, pf, e), e, 1u}});
       }
-      std::vector<std::uint32_t> pn, pp;
+      std::vector<std::uint32_t>& pn = pn_;
+      std::vector<std::uint32_t>& pp = pp_;
+      pn.clear();
+      pp.clear();
       std::uint32_t zero[2] = {null, null};
       int zeros = 0;
       const std::size_t m = aug_.size();
@@ -259,15 +271,15 @@ private:
       if(piece.negative_cell == c) piece.negative_cell = cp;
       else piece.positive_cell = cp;
       a_.facets_.push_back(piece);
-      // Exact capacities: the polygons are the bulk of the memory.
-      a_.polygons_.emplace_back(pp.begin(), pp.end());
-      a_.polygons_[f] = std::vector<std::uint32_t>(pn.begin(), pn.end());
+      a_.polygons_.assign(a_.polygons_.add_list(), pp.data(), pp.data() + pp.size());
+      a_.polygons_.assign(f, pn.data(), pn.data() + pn.size());
       neg.push_back(f);
       pos.push_back(g);
-      if(other != null) a_.cell_facets_[other].push_back(g);
+      if(other != null) a_.cell_facets_.push_back(other, g);
     }
     // The new facet: the chords chained into a cycle.
-    std::vector<std::uint32_t> poly;
+    std::vector<std::uint32_t>& poly = poly_;
+    poly.clear();
     std::vector<char> done(chords_.size(), 0);
     if(chords_.size() >= 3) {
       std::uint32_t first = chords_[0].a, next = chords_[0].b;
@@ -290,11 +302,11 @@ private:
     if(poly.size() < 6)
       throw std::logic_error("MDCS: Plane_arrangement_3: internal error: the section of a cell by a plane is not "
                              "a closed polygon");
-    a_.polygons_[nf] = std::vector<std::uint32_t>(poly.begin(), poly.end());
+    a_.polygons_.assign(nf, poly.data(), poly.data() + poly.size());
     neg.push_back(nf);
     pos.push_back(nf);
-    a_.cell_facets_[c] = std::vector<std::uint32_t>(neg.begin(), neg.end());
-    a_.cell_facets_[cp] = std::vector<std::uint32_t>(pos.begin(), pos.end());
+    a_.cell_facets_.assign(c, neg.data(), neg.data() + neg.size());
+    a_.cell_facets_.assign(cp, pos.data(), pos.data() + pos.size());
     // The tree: the leaf of c becomes an inner node with two leaves.
     const std::uint32_t node = a_.node_of_cell_[c];
     const std::uint32_t ln = std::uint32_t(a_.nodes_.size());
@@ -315,13 +327,78 @@ private:
     else x.positive_cell = to;
   }
 
+  // After a construction released the tree: a bounding-volume tree of the cells (median splits of their boxes'
+  // centres along the longest axis). Any tree whose nodes' boxes contain their leaves' cells does.
+  void rebuild_tree()
+  {
+    const std::size_t n = a_.cell_facets_.size();
+    std::vector<std::array<float, 6>> boxes(n);
+    for(std::size_t c = 0; c < n; ++c) {
+      typename Arrangement::Tree_node t;
+      cell_box(std::uint32_t(c), t);
+      for(int i = 0; i < 3; ++i) {
+        boxes[c][i] = t.lo[i];
+        boxes[c][3 + i] = t.hi[i];
+      }
+    }
+    std::vector<std::uint32_t> order(n);
+    for(std::size_t c = 0; c < n; ++c) order[c] = std::uint32_t(c);
+    a_.nodes_.clear();
+    a_.nodes_.reserve(2 * n);
+    a_.node_of_cell_.assign(n, null);
+    build_subtree(order.data(), order.data() + n, boxes);
+  }
+
+  std::uint32_t build_subtree(std::uint32_t* b, std::uint32_t* e, const std::vector<std::array<float, 6>>& boxes)
+  {
+    const std::uint32_t node = std::uint32_t(a_.nodes_.size());
+    a_.nodes_.emplace_back();
+    float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+    for(const std::uint32_t* c = b; c != e; ++c)
+      for(int i = 0; i < 3; ++i) {
+        lo[i] = (std::min)(lo[i], boxes[*c][i]);
+        hi[i] = (std::max)(hi[i], boxes[*c][3 + i]);
+      }
+    std::uint32_t child[2] = {null, *b};
+    if(e - b == 1) a_.node_of_cell_[*b] = node;
+    else {
+      int axis = 0;
+      for(int i = 1; i < 3; ++i)
+        if(hi[i] - lo[i] > hi[axis] - lo[axis]) axis = i;
+      std::uint32_t* mid = b + (e - b) / 2;
+      std::nth_element(b, mid, e, [&](std::uint32_t x, std::uint32_t y) {
+        const float cx = boxes[x][axis] + boxes[x][3 + axis], cy = boxes[y][axis] + boxes[y][3 + axis];
+        return cx < cy || (cx == cy && x < y);
+      });
+      child[0] = build_subtree(b, mid, boxes);
+      child[1] = build_subtree(mid, e, boxes);
+    }
+    typename Arrangement::Tree_node& t = a_.nodes_[node];
+    for(int i = 0; i < 3; ++i) {
+      t.lo[i] = lo[i];
+      t.hi[i] = hi[i];
+    }
+    t.child[0] = child[0];
+    t.child[1] = child[1];
+    return node;
+  }
+
   void set_leaf(std::uint32_t node, std::uint32_t cell)
   {
     typename Arrangement::Tree_node& n = a_.nodes_[node];
+    cell_box(cell, n);
+    n.child[0] = null;
+    n.child[1] = cell;
+  }
+
+  // The bounding box of a cell, enlarged by half a lattice unit.
+  void cell_box(std::uint32_t cell, typename Arrangement::Tree_node& n) const
+  {
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for(std::uint32_t f : a_.cell_facets_[cell]) {
-      const std::vector<std::uint32_t>& poly = a_.polygons_[f];
-      for(std::size_t k = 0; k < poly.size(); k += 2)
+    for(const std::uint32_t* fi = a_.cell_facets_.begin(cell); fi != a_.cell_facets_.end(cell); ++fi) {
+      const std::uint32_t* poly = a_.polygons_.begin(*fi);
+      const std::size_t m = a_.polygons_.size(*fi);
+      for(std::size_t k = 0; k < m; k += 2)
         for(int i = 0; i < 3; ++i) {
           lo[i] = (std::min)(lo[i], a_.points_[poly[k]][i]);
           hi[i] = (std::max)(hi[i], a_.points_[poly[k]][i]);
@@ -331,8 +408,6 @@ private:
       n.lo[i] = float(lo[i] - 0.5);
       n.hi[i] = float(hi[i] + 0.5);
     }
-    n.child[0] = null;
-    n.child[1] = cell;
   }
 
   Arrangement& a_;
@@ -340,7 +415,7 @@ private:
   std::unordered_map<std::uint64_t, std::uint32_t> split_vertices_;
   std::vector<Chord> chords_;
   std::vector<std::array<std::uint32_t, 3>> aug_; // vertex, edge plane, side + 1
-  std::vector<std::uint32_t> poly_;
+  std::vector<std::uint32_t> poly_, old_, neg_, pos_, pn_, pp_; // reused buffers
 };
 
 } // namespace internal
@@ -361,17 +436,18 @@ Plane_arrangement_3::Plane_arrangement_3(const std::vector<Lattice_plane_3>& pla
     reporter(i);
     builder.insert(planes[i]);
   }
-  // Give back the slack of the containers (they grew by doubling).
+  // Drop the scratch data and the tree (it only serves insertions: a later insert_plane() rebuilds one) first, so
+  // that packing the lists does not raise the peak; then give back the slack of the containers (they grew by
+  // doubling).
+  std::vector<std::uint32_t>().swap(side_epoch_);
+  std::vector<signed char>().swap(side_cache_);
+  std::vector<Tree_node>().swap(nodes_);
+  std::vector<std::uint32_t>().swap(node_of_cell_);
+  polygons_.compact();
+  cell_facets_.compact();
   facets_.shrink_to_fit();
-  polygons_.shrink_to_fit();
-  for(auto& c : cell_facets_) c.shrink_to_fit();
-  cell_facets_.shrink_to_fit();
   vertex_planes_.shrink_to_fit();
   points_.shrink_to_fit();
-  nodes_.shrink_to_fit();
-  node_of_cell_.shrink_to_fit();
-  side_epoch_.shrink_to_fit();
-  side_cache_.shrink_to_fit();
   reporter.finish();
 }
 
@@ -383,15 +459,11 @@ inline bool Plane_arrangement_3::insert_plane(const Lattice_plane_3& plane)
 
 inline std::size_t Plane_arrangement_3::memory_bytes() const
 {
-  std::size_t bytes = planes_.capacity() * sizeof(Lattice_plane_3) + used_.capacity() +
-                      facets_.capacity() * sizeof(Facet) + polygons_.capacity() * sizeof(std::vector<std::uint32_t>) +
-                      cell_facets_.capacity() * sizeof(std::vector<Facet_index>) +
-                      vertex_planes_.capacity() * sizeof(std::array<Plane_index, 3>) +
-                      points_.capacity() * sizeof(std::array<double, 3>) + nodes_.capacity() * sizeof(Tree_node) +
-                      node_of_cell_.capacity() * 4 + side_epoch_.capacity() * 5;
-  for(const auto& p : polygons_) bytes += p.capacity() * 4;
-  for(const auto& c : cell_facets_) bytes += c.capacity() * 4;
-  return bytes;
+  return planes_.capacity() * sizeof(Lattice_plane_3) + used_.capacity() + facets_.capacity() * sizeof(Facet) +
+         polygons_.memory_bytes() + cell_facets_.memory_bytes() +
+         vertex_planes_.capacity() * sizeof(std::array<Plane_index, 3>) +
+         points_.capacity() * sizeof(std::array<double, 3>) + nodes_.capacity() * sizeof(Tree_node) +
+         node_of_cell_.capacity() * 4 + side_epoch_.capacity() * 4 + side_cache_.capacity();
 }
 
 } // namespace Variational_minimization
