@@ -5,7 +5,10 @@
 // uniform, clustered and normal points, odd wheels (fractional LP -> branch and bound), per-stage times,
 // peak memory, and the fraction of integral LP optima over many random sets (thesis ch. 3.4.4).
 //
-// usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--repeats R] [--sets S] [--max-wheel K] [--csv FILE]
+// usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R]
+//                  [--sets S] [--max-wheel K] [--csv FILE]
+//   --lmt: the LMT-skeleton + face dynamic program + LP pipeline (Mwt_options::use_lmt_skeleton);
+//   --no-random: wheels only; --bb-limit: branch-and-bound limit per wheel in seconds (default 120).
 //   default sizes 100, 300, 1000, 2000 uniform; --large adds 5000 and 10000 (one run each unless --sizes is
 //   given). Wheels k = 13..K (default 41, 0: none); --sets: random sets for the integrality count (default 100).
 
@@ -60,7 +63,8 @@ std::vector<Point> wheel(int k)
 
 int main(int argc, char** argv)
 {
-  bool large = false, uniform_only = false;
+  bool large = false, uniform_only = false, lmt = false, no_random = false;
+  double bb_limit = 120;
   std::vector<int> sizes{100, 300, 1000, 2000};
   bool explicit_sizes = false;
   int repeats = 3, sets = 100, max_wheel = 41;
@@ -73,6 +77,9 @@ int main(int argc, char** argv)
     else if(a == "--max-wheel" && i + 1 < argc) max_wheel = std::atoi(argv[++i]);
     else if(a == "--csv" && i + 1 < argc) csv = argv[++i];
     else if(a == "--uniform-only") uniform_only = true;
+    else if(a == "--lmt") lmt = true;
+    else if(a == "--no-random") no_random = true;
+    else if(a == "--bb-limit" && i + 1 < argc) bb_limit = std::atof(argv[++i]);
     else if(a == "--sizes" && i + 1 < argc) {
       sizes.clear();
       explicit_sizes = true;
@@ -83,22 +90,24 @@ int main(int argc, char** argv)
         pos = comma == std::string::npos ? list.size() : comma + 1;
       }
     }
-    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--repeats R] [--sets S] [--max-wheel K] [--csv FILE]\n"); return 2; }
+    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R] [--sets S] [--max-wheel K] [--csv FILE]\n"); return 2; }
   }
   mdcs_bench::Table table({"input", "n", "status", "weight", "LP_opt", "cand_edges", "edges_per_n", "triangles", "lp_cols",
                            "lp_rows", "t_candidates", "t_triangles", "t_lp_build", "t_lp_solve", "t_certificate",
-                           "t_branch_bound", "t_total", "peak_MiB"});
+                           "t_branch_bound", "t_total", "peak_MiB", "lmt_certain", "lmt_possible", "faces",
+                           "dp_faces", "dp_triangles", "largest_face", "t_lmt", "t_face_dp"});
   auto run = [&](const std::string& name, const std::vector<Point>& p, int reps, double bb_limit) {
-    std::vector<double> tc, tt, tb, ts, tcert, tbb, tot;
+    std::vector<double> tc, tt, tb, ts, tcert, tbb, tot, tl, tf;
     MWT::Mwt_result r;
     for(int k = 0; k < reps; ++k) {
       MWT::Mwt_options o;
       o.branch_and_bound_time_limit = bb_limit;
+      o.use_lmt_skeleton = lmt;
       r = MWT::minimum_weight_triangulation_2(p, o);
       const auto& s = r.statistics;
       tc.push_back(s.time_candidates); tt.push_back(s.time_triangles); tb.push_back(s.time_lp_build);
       ts.push_back(s.time_lp_solve); tcert.push_back(s.time_certificate); tbb.push_back(s.time_branch_and_bound);
-      tot.push_back(s.time_total);
+      tot.push_back(s.time_total); tl.push_back(s.time_lmt); tf.push_back(s.time_face_dp);
     }
     const auto& s = r.statistics;
     table.add_row({name, std::to_string(p.size()), MWT::to_string(r.status), mdcs_bench::fmt(r.weight, "%.6f"),
@@ -108,16 +117,20 @@ int main(int argc, char** argv)
                    mdcs_bench::fmt(mdcs_bench::median(tt)), mdcs_bench::fmt(mdcs_bench::median(tb)),
                    mdcs_bench::fmt(mdcs_bench::median(ts)), mdcs_bench::fmt(mdcs_bench::median(tcert)),
                    mdcs_bench::fmt(mdcs_bench::median(tbb)), mdcs_bench::fmt(mdcs_bench::median(tot)),
-                   mdcs_bench::fmt(mdcs_bench::peak_rss_mib(), "%.0f")});
+                   mdcs_bench::fmt(mdcs_bench::peak_rss_mib(), "%.0f"), std::to_string(s.lmt_certain_edges),
+                   std::to_string(s.lmt_possible_edges), std::to_string(s.lmt_faces), std::to_string(s.lmt_solved_faces),
+                   std::to_string(s.dp_triangles), std::to_string(s.lmt_largest_face), mdcs_bench::fmt(mdcs_bench::median(tl)),
+                   mdcs_bench::fmt(mdcs_bench::median(tf))});
     std::fprintf(stderr, "%s n=%zu: %s, %.3f s\n", name.c_str(), p.size(), MWT::to_string(r.status), mdcs_bench::median(tot));
   };
   if(large) { sizes.push_back(5000); sizes.push_back(10000); }
+  if(no_random) { sizes.clear(); uniform_only = true; }
   for(int n : sizes) run("uniform", points("uniform", n, 1), (n >= 5000 && !explicit_sizes) ? 1 : repeats, 0);
   if(!uniform_only) for(int n : {1000, 2000}) {
     run("clustered", points("clustered", n, 2), repeats, 0);
     run("normal", points("normal", n, 3), repeats, 0);
   }
-  for(int k = 13; k <= max_wheel; k += (k < 21 ? 2 : 10)) run("wheel", wheel(k), 1, 120);
+  for(int k = 13; k <= max_wheel; k += (k < 21 ? 2 : 10)) run("wheel", wheel(k), 1, bb_limit);
   table.print();
   if(!table.write_csv(csv)) std::fprintf(stderr, "cannot write %s\n", csv.c_str());
 

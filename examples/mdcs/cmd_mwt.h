@@ -146,13 +146,17 @@ inline std::string report(const MWT::Mwt_result& r)
     << std::setprecision(4) << "time [s]          candidates " << s.time_candidates << ", triangles " << s.time_triangles
     << ", LP build " << s.time_lp_build << ", LP solve " << s.time_lp_solve << ", certificate " << s.time_certificate
     << ", branch and bound " << s.time_branch_and_bound << ", total " << s.time_total << "\n";
+  if(s.lmt_certain_edges > 0)
+    o << "LMT-skeleton      " << s.lmt_certain_edges << " certain, " << s.lmt_possible_edges << " possible edges; "
+      << s.lmt_solved_faces << " of " << s.lmt_faces << " faces by the dynamic program (" << s.dp_triangles
+      << " triangles); time " << s.time_lmt << " + " << s.time_face_dp << " s\n";
   return o.str();
 }
 
 } // namespace mwt_detail
 
 // Names of the options of `mdcs mwt` that take no value.
-inline std::vector<std::string> mwt_flags() { return {"quiet", "help", "no-pruning", "lp-only"}; }
+inline std::vector<std::string> mwt_flags() { return {"quiet", "help", "no-pruning", "lp-only", "lmt"}; }
 
 inline const char* mwt_usage()
 {
@@ -168,6 +172,7 @@ inline const char* mwt_usage()
          "  --metric M             L2 (default), L1, Linf (L1/Linf: no pruning, small inputs only)\n"
          "  --no-pruning           use every segment as a candidate edge (O(n^3) triangles)\n"
          "  --lp-only              do not resolve a fractional LP optimum by branch and bound\n"
+         "  --lmt                  LMT-skeleton + dynamic program on its faces, the LP only for the rest (L2 only)\n"
          "  --output DIR           output folder (default mwt_output): mwt.off, mwt_edges.csv, mwt.svg(.png), report.txt\n"
          "  --quiet                no progress bar\n"
          "  exit codes: 0 triangulation found (see status), 1 solver failure, 2 usage, 3 bad input\n";
@@ -184,7 +189,7 @@ inline int command_mwt(const Options& o)
   const std::string solver = o.text("solver", "clp"), metric = o.text("metric", "L2");
   const std::string out = o.text("output", "mwt_output");
   const bool quiet = !o.text("quiet", "").empty(), no_pruning = !o.text("no-pruning", "").empty(),
-             lp_only = !o.text("lp-only", "").empty();
+             lp_only = !o.text("lp-only", "").empty(), lmt = !o.text("lmt", "").empty();
   o.reject_unknown();
   const int sources = int(n > 0) + int(k > 0) + int(!o.positional().empty());
   if(sources != 1 || o.positional().size() > 1) throw Usage_error("give exactly one of POINTS, --random N, --wheel K");
@@ -200,6 +205,7 @@ inline int command_mwt(const Options& o)
   else throw Usage_error("--metric must be L2, L1 or Linf");
   if(no_pruning) opt.pruning = MWT::Pruning::none;
   opt.resolve_fractional = !lp_only;
+  opt.use_lmt_skeleton = lmt;
   Progress_bar bar(quiet);
   opt.progress = [&bar](const char* stage, double f) { return bar(stage, f); };
   const std::vector<Point> p = n > 0 ? random_points(n, distribution, seed)

@@ -11,6 +11,8 @@
 #include <CGAL/Minimum_weight_triangulation_2/Mwt_result.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Candidate_edges_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Empty_triangles_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Face_dp_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Lmt_skeleton_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Validation_2.h>
 #include <CGAL/Interval_nt.h>
 #include <CGAL/MDCS/progress.h>
@@ -108,10 +110,18 @@ public:
     const auto t0 = clock::now();
     auto all = internal::empty_triangles(pts_, *grid_, edges_, *index_, options_.progress);
     stats_.empty_triangles = all.size();
-    triangles_ = internal::remove_unusable_triangles(all, is_hull_);
-    triangles_done_ = true;
     stats_.time_triangles = since(t0);
+    row_one_ = is_hull_;
+    fixed_edge_.assign(edges_.size(), 0);
+    fixed_.clear();
+    if(options_.use_lmt_skeleton) all = lmt_and_face_dp(all);
+    triangles_ = internal::remove_unusable_triangles(all, row_one_);
+    triangles_done_ = true;
   }
+
+  /// After compute_empty_triangles() with `use_lmt_skeleton`: the state of every candidate edge
+  /// (0 impossible, 1 possible, 2 certain, see internal::Lmt_edge_state); empty otherwise.
+  const std::vector<char>& lmt_edge_states() const { return lmt_state_; }
 
   /// Variables: the usable empty triangles; rows: hull edges (= 1) and interior edges (left - right = 0).
   void build_linear_program()
@@ -125,12 +135,13 @@ public:
       for(int i = 0; i < 3; ++i) {
         const int e = t.edge[i];
         if(row_of_edge_[e] < 0) {
-          row_of_edge_[e] = is_hull_[e] ? lp_.add_row(1, 1) : lp_.add_row(0, 0);
-          row_is_hull_.push_back(is_hull_[e]);
+          row_of_edge_[e] = row_one_[e] ? lp_.add_row(1, 1) : lp_.add_row(0, 0);
+          row_is_hull_.push_back(row_one_[e]);
         }
       }
     for(std::size_t i = 0; i < hull_.size(); ++i)
-      if(row_of_edge_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])] < 0)
+      if(row_of_edge_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])] < 0 &&
+         !fixed_edge_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])])
         throw std::runtime_error("minimum_weight_triangulation_2: a hull edge has no empty triangle (internal error)");
     edge_length_.resize(edges_.size());
     for(std::size_t e = 0; e < edges_.size(); ++e) edge_length_[e] = length(edges_[e].first, edges_[e].second);
@@ -139,7 +150,7 @@ public:
       double val[3];
       for(int i = 0; i < 3; ++i) {
         rows[i] = row_of_edge_[t.edge[i]];
-        val[i] = is_hull_[t.edge[i]] ? 1.0 : double(t.side[i]);
+        val[i] = row_one_[t.edge[i]] ? 1.0 : double(t.side[i]);
       }
       lp_.add_column(triangle_cost(t) / scale_, 0, Sparse_linear_program::infinity(), rows, val, 3);
     }
@@ -162,6 +173,7 @@ public:
     if(!lp_done_) build_linear_program();
     Mwt_result r;
     r.solver = solver.name();
+    if(lp_.number_of_columns() == 0 && !fixed_.empty()) return solved_by_dynamic_program(r);
     if(!options_.progress("LP solve", 0)) throw CGAL::MDCS::Operation_cancelled("LP solve");
     auto t0 = clock::now();
     const Linear_program_solution sol = solver.solve(lp_);
@@ -173,12 +185,13 @@ public:
       r.message = std::string("LP solver: ") + to_string(sol.status) + " (" + sol.message + ")";
       return finish(r);
     }
-    r.lp_objective = sol.objective * scale_;
+    const double fixed_part = fixed_weight_lower_bound();   // faces solved by the dynamic program
+    r.lp_objective = sol.objective * scale_ + fixed_part;
     r.lp_exact = sol.exact;
     t0 = clock::now();
-    r.lower_bound = dual_lower_bound(sol.dual);
+    r.lower_bound = dual_lower_bound(sol.dual) + fixed_part;
     std::size_t fractional = 0;
-    std::vector<std::array<int, 3>> chosen;
+    std::vector<std::array<int, 3>> chosen(fixed_);
     for(std::size_t j = 0; j < sol.primal.size(); ++j) {
       const double x = sol.primal[j];
       if(std::abs(x - 1) <= options_.integrality_tolerance) chosen.push_back(triangles_[j].v);
@@ -217,7 +230,7 @@ public:
       r.message += "; branch and bound did not finish: " + mip.message;
       return finish(r);
     }
-    chosen.clear();
+    chosen = fixed_;
     for(std::size_t j = 0; j < mip.primal.size(); ++j)
       if(mip.primal[j] > 0.5) chosen.push_back(triangles_[j].v);
     const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, chosen) : std::string();
@@ -266,10 +279,76 @@ private:
 
   Mwt_result finish(Mwt_result& r)
   {
-    stats_.time_total = stats_.time_candidates + stats_.time_triangles + stats_.time_lp_build + stats_.time_lp_solve +
+    stats_.time_total = stats_.time_candidates + stats_.time_triangles + stats_.time_lmt + stats_.time_face_dp + stats_.time_lp_build + stats_.time_lp_solve +
                         stats_.time_certificate + stats_.time_branch_and_bound;
     r.statistics = stats_;
     return r;
+  }
+
+  // LMT-skeleton, then the dynamic program on the simple faces of its certain edges; returns the triangles
+  // left for the LP: those of the solved faces as chosen by the program, all possible ones elsewhere.
+  std::vector<internal::Lp_triangle> lmt_and_face_dp(const std::vector<internal::Lp_triangle>& all)
+  {
+    if(options_.metric != Edge_metric::L2 || options_.triangle_weight)
+      throw std::invalid_argument("minimum_weight_triangulation_2: the LMT-skeleton is implemented for the Euclidean metric only");
+    auto t0 = clock::now();
+    lmt_state_ = internal::lmt_skeleton(pts_, edges_, all, is_hull_, options_.progress);
+    std::vector<internal::Lp_triangle> live;
+    for(const auto& t : all)
+      if(lmt_state_[t.edge[0]] && lmt_state_[t.edge[1]] && lmt_state_[t.edge[2]]) live.push_back(t);
+    for(char c : lmt_state_) {
+      if(c == internal::lmt_certain) ++stats_.lmt_certain_edges;
+      if(c == internal::lmt_possible) ++stats_.lmt_possible_edges;
+    }
+    stats_.time_lmt = since(t0);
+    if(!options_.progress("face dynamic program", 0)) throw CGAL::MDCS::Operation_cancelled("face dynamic program");
+    t0 = clock::now();
+    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, live, lmt_state_);
+    // the faces solved by the program leave the LP; their edges shared with other faces become rows "= 1"
+    std::vector<internal::Lp_triangle> out;
+    for(int t : dp.dp_triangles()) {
+      fixed_.push_back(live[t].v);
+      for(int i = 0; i < 3; ++i) row_one_[live[t].edge[i]] = fixed_edge_[live[t].edge[i]] = 1;
+    }
+    for(std::size_t t = 0; t < live.size(); ++t)
+      if(!dp.in_solved_face(int(t))) out.push_back(live[t]);
+    stats_.lmt_faces = dp.number_of_faces();
+    stats_.lmt_solved_faces = dp.number_of_solved_faces();
+    stats_.dp_triangles = dp.dp_triangles().size();
+    stats_.lmt_largest_face = dp.largest_face();
+    stats_.time_face_dp = since(t0);
+    return out;
+  }
+
+  // Lower bound (input units) of the weight of the edges of the fixed triangles that are no LP row.
+  double fixed_weight_lower_bound() const
+  {
+    if(fixed_.empty()) return 0;
+    Interval I(0);
+    for(std::size_t e = 0; e < edges_.size(); ++e)
+      if(fixed_edge_[e] && (row_of_edge_.empty() || row_of_edge_[e] < 0)) I += interval_length(edges_[e].first, edges_[e].second);
+    return I.inf();
+  }
+
+  // Every face solved by the dynamic program: no LP; the triangulation is validated exactly.
+  Mwt_result solved_by_dynamic_program(Mwt_result& r)
+  {
+    const auto t0 = clock::now();
+    const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, fixed_) : std::string();
+    if(!err.empty()) {
+      r.status = Mwt_status::solver_failed;
+      r.message = "the dynamic program's triangles are not a triangulation (internal error): " + err;
+      return finish(r);
+    }
+    r.triangles = fixed_;
+    r.weight = weight_of(fixed_, &upper_weight_);
+    r.lower_bound = fixed_weight_lower_bound();
+    r.lp_objective = r.weight;
+    r.lp_integral = true;
+    r.status = Mwt_status::certified_optimal;
+    r.message = "every face of the LMT-skeleton solved by the dynamic program (no LP needed)";
+    stats_.time_certificate = since(t0);
+    return finish(r);
   }
 
   double length(int a, int b) const
@@ -307,7 +386,7 @@ private:
   {
     if(options_.triangle_weight) return user_weight(t.v[0], t.v[1], t.v[2]);
     double c = 0;
-    for(int i = 0; i < 3; ++i) c += (is_hull_[t.edge[i]] ? 1.0 : 0.5) * edge_length_[t.edge[i]];
+    for(int i = 0; i < 3; ++i) c += (row_one_[t.edge[i]] ? 1.0 : 0.5) * edge_length_[t.edge[i]];
     return c;
   }
 
@@ -330,7 +409,7 @@ private:
         c = Interval(w * (1 - 1e-12), w * (1 + 1e-12));
       } else {
         for(int i = 0; i < 3; ++i)
-          c += (is_hull_[t.edge[i]] ? Interval(1) : Interval(0.5)) * interval_length(t.v[i], t.v[(i + 1) % 3]);
+          c += (row_one_[t.edge[i]] ? Interval(1) : Interval(0.5)) * interval_length(t.v[i], t.v[(i + 1) % 3]);
         c /= S;
       }
       Interval d = c;
@@ -350,7 +429,10 @@ private:
   bool triangles_done_ = false, lp_done_ = false;
   std::vector<Edge> edges_;
   std::unique_ptr<internal::Edge_index> index_;
-  std::vector<char> is_hull_, row_is_hull_;
+  std::vector<char> is_hull_, row_is_hull_, lmt_state_;
+  std::vector<char> row_one_;      // rows "sum = 1" (hull edges, edges of faces solved by the dynamic program)
+  std::vector<char> fixed_edge_;   // edges of the triangles fixed by the dynamic program
+  std::vector<std::array<int, 3>> fixed_;
   std::vector<internal::Lp_triangle> triangles_;
   std::vector<int> row_of_edge_;
   std::vector<double> edge_length_;

@@ -30,7 +30,9 @@ enum class Lp_solver_choice { automatic, clp, glpk, exact };
 
   - `certified_optimal`: the LP optimum is integral, the triangulation passed the exact validation, and a
     dual bound computed in interval arithmetic (costs are sums of square roots) proves that no
-    triangulation is lighter by more than `certificate_tolerance` (relative).
+    triangulation is lighter by more than `certificate_tolerance` (relative). With `use_lmt_skeleton`, the
+    faces solved by the dynamic program are optimal by the exact LMT-skeleton and an exhaustive program in
+    double precision (no LP there; when every face is solved no LP is built at all).
   - `optimal_after_branch_and_bound`: the LP optimum was fractional; the binary program solved by GLPK's
     branch and cut (floating point, gap 0) gave this triangulation, validated exactly. `lower_bound` is the
     rigorous LP bound.
@@ -67,6 +69,9 @@ struct Mwt_options
   double certificate_tolerance = 1e-9;             ///< relative gap accepted by the certificate
   double integrality_tolerance = 1e-6;
   bool validate = true;                            ///< exact validation of the output triangulation
+  /// Euclidean metric only: LMT-skeleton on the candidate edges, the dynamic program on the simple faces its
+  /// certain edges leave, the triangle LP on the rest (the impossible edges removed from it).
+  bool use_lmt_skeleton = false;
   /// Progress/cancel callback `bool(const char* stage, double fraction)`; see CGAL/MDCS/progress.h.
   std::function<bool(const char*, double)> progress;
 };
@@ -77,6 +82,11 @@ struct Mwt_statistics
   std::size_t points = 0, hull_points = 0, candidate_edges = 0, empty_triangles = 0, lp_columns = 0,
               lp_rows = 0, lp_nonzeros = 0, fractional_variables = 0;
   long lp_iterations = 0;
+  /// LMT-skeleton (when `use_lmt_skeleton`): certain/possible edges, faces of the certain edges, those solved
+  /// by the dynamic program, its triangles, the largest face (vertices on its boundary walk).
+  std::size_t lmt_certain_edges = 0, lmt_possible_edges = 0, lmt_faces = 0, lmt_solved_faces = 0, dp_triangles = 0,
+              lmt_largest_face = 0;
+  double time_lmt = 0, time_face_dp = 0;
   double time_candidates = 0, time_triangles = 0, time_lp_build = 0, time_lp_solve = 0, time_certificate = 0,
          time_branch_and_bound = 0, time_total = 0;
 };

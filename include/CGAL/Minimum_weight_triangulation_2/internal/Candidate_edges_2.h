@@ -122,6 +122,38 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
   std::vector<Edge> out;
   std::vector<double> kl(S), kr(S);
   std::vector<std::pair<int, double>> seen;
+  // far[s]: the farthest point of the bounding box in the (slightly widened) direction sector s of p; a sector
+  // is finished once the searched radius passes it, even if no point killed it (points near the boundary)
+  double bx0 = HUGE_VAL, by0 = HUGE_VAL, bx1 = -HUGE_VAL, by1 = -HUGE_VAL;
+  for(int i = 0; i < n; ++i) {
+    bx0 = std::min(bx0, pts.x(i)); bx1 = std::max(bx1, pts.x(i));
+    by0 = std::min(by0, pts.y(i)); by1 = std::max(by1, pts.y(i));
+  }
+  const double diag = std::hypot(bx1 - bx0, by1 - by0);
+  std::vector<double> far(S);
+  auto exit_distance = [&](double px, double py, double a) {
+    const double dx = std::cos(a), dy = std::sin(a);
+    double t = HUGE_VAL;
+    if(dx > 1e-300) t = std::min(t, (bx1 - px) / dx);
+    if(dx < -1e-300) t = std::min(t, (bx0 - px) / dx);
+    if(dy > 1e-300) t = std::min(t, (by1 - py) / dy);
+    if(dy < -1e-300) t = std::min(t, (by0 - py) / dy);
+    return std::max(0.0, t);
+  };
+  auto compute_far = [&](int p) {
+    const double px = pts.x(p), py = pts.y(p), widen = 1e-6;
+    const double cxs[4] = {bx0, bx1, bx1, bx0}, cys[4] = {by0, by0, by1, by1};
+    for(int s = 0; s < S; ++s) {
+      const double a0 = s * w - widen, a1 = (s + 1) * w + widen;
+      double f = std::max(exit_distance(px, py, a0), exit_distance(px, py, a1));
+      for(int c = 0; c < 4; ++c) {
+        double a = std::atan2(cys[c] - py, cxs[c] - px);
+        if(a < a0) a += two_pi;
+        if(a >= a0 && a <= a1) f = std::max(f, std::hypot(cxs[c] - px, cys[c] - py));
+      }
+      far[s] = f * (1 + 1e-9) + 1e-12 * diag;
+    }
+  };
   CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "candidate edges", std::size_t(n));
   auto angle = [&](int p, int r) {
     double a = std::atan2(pts.y(r) - pts.y(p), pts.x(r) - pts.x(p));
@@ -139,6 +171,7 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
     std::fill(kl.begin(), kl.end(), HUGE_VAL);
     std::fill(kr.begin(), kr.end(), HUGE_VAL);
     seen.clear();
+    compute_far(p);
     const int ci = grid.cx(pts.x(p)), cj = grid.cy(pts.y(p));
     const double c = grid.cell_size();
     for(int k = 0;; ++k) {
@@ -162,7 +195,7 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
       if(all) break;
       const double reach = k * c * (1 - 1e-9);
       bool done = true;
-      for(int s = 0; s < S && done; ++s) done = std::max(kl[s], kr[s]) < reach;
+      for(int s = 0; s < S && done; ++s) done = std::max(kl[s], kr[s]) < reach || far[s] < reach;
       if(done) break;
     }
     for(const auto& rs : seen) {

@@ -1,0 +1,294 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The faces that the certain edges of the LMT-skeleton leave, and the dynamic program (Klincsek) on those
+// that are simple polygons: W(i, j) = min_k W(i, k) + W(k, j) + the new diagonals, over the empty triangles
+// whose edges are all possible and whose diagonals lie inside the polygon (exact in-cone tests). A face with
+// an input point or an island inside has no such triangulation (every triangle must be empty), so the
+// program fails there and the face is left to the LP. Face tracing sorts the certain edges around each
+// vertex with exact orientations.
+
+#ifndef CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_FACE_DP_2_H
+#define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_FACE_DP_2_H
+
+#include <CGAL/Minimum_weight_triangulation_2/internal/Lmt_skeleton_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Minimum_weight_triangulation_2 {
+namespace internal {
+
+/// Faces of the certain edges, the dynamic program on the simple ones, and the face of every triangle.
+template <class P>
+class Face_dp_2
+{
+public:
+  /// `state`: the result of lmt_skeleton(); `tri`: the empty triangles with possible edges; `max_face`: larger
+  /// faces go to the LP (the programs take O(m^3) time, O(m^2) memory).
+  Face_dp_2(const P& pts, const std::vector<Edge>& edges, const Edge_index& index, const std::vector<Lp_triangle>& tri,
+            const std::vector<char>& state, std::size_t max_face = 400)
+    : pts_(pts), edges_(edges), index_(index), tri_(tri), state_(state), n_(int(pts.size())), nbr_(n_)
+  {
+    for(std::size_t e = 0; e < edges.size(); ++e)
+      if(state[e] == lmt_certain) { nbr_[edges[e].first].push_back(edges[e].second); nbr_[edges[e].second].push_back(edges[e].first); }
+    for(int v = 0; v < n_; ++v) std::sort(nbr_[v].begin(), nbr_[v].end(), [&](int a, int b) { return ccw_less(v, a, b); });
+    tri_map_.reserve(tri.size() * 2);
+    for(std::size_t t = 0; t < tri.size(); ++t) tri_map_.emplace(tri_key(tri[t].v[0], tri[t].v[1], tri[t].v[2]), int(t));
+    trace_faces();
+    // the face of each isolated point (no certain edge), found through a triangle at it
+    std::vector<int> inner_count(faces_.size(), 0), inner_point(faces_.size(), -1);
+    std::vector<char> located(std::size_t(n_), 0);
+    for(std::size_t t = 0; t < tri.size(); ++t)
+      for(int r = 0; r < 3; ++r) {
+        const int u = tri[t].v[r];
+        if(!nbr_[u].empty() || located[u]) continue;
+        const int f = face_of(int(t));
+        if(f < 0) continue;
+        located[u] = 1;
+        ++inner_count[f];
+        inner_point[f] = u;
+      }
+    solved_.assign(faces_.size(), 0);
+    for(std::size_t f = 0; f < faces_.size(); ++f)
+      if(faces_[f].size() <= max_face) {
+        solved_[f] = solve_face(faces_[f], -1);
+        if(!solved_[f] && inner_count[f] == 1) solved_[f] = solve_face(faces_[f], inner_point[f]);
+      }
+  }
+
+  std::size_t number_of_faces() const { return faces_.size(); }
+  std::size_t number_of_solved_faces() const { return std::size_t(std::count(solved_.begin(), solved_.end(), 1)); }
+  /// Triangles (indices into `tri`) chosen by the dynamic program in the solved faces.
+  const std::vector<int>& dp_triangles() const { return dp_tri_; }
+  std::size_t largest_face() const
+  {
+    std::size_t s = 0;
+    for(const auto& f : faces_) s = std::max(s, f.size());
+    return s;
+  }
+
+  /// Whether triangle t (all of its edges possible) lies in a face solved by the dynamic program.
+  bool in_solved_face(int t) const
+  {
+    const int f = face_of(t);
+    return f >= 0 && solved_[f];
+  }
+
+  /// Number of faces solved with one interior point (a wheel-like face).
+  std::size_t number_of_one_point_faces() const { return one_point_faces_; }
+
+private:
+  // the face of the certain edges that holds triangle t (all of its edges possible), -1 if all its vertices are isolated
+  int face_of(int t) const
+  {
+    for(int r = 0; r < 3; ++r) {
+      const int u = tri_[t].v[r], v = tri_[t].v[(r + 1) % 3];
+      const auto& L = nbr_[u];
+      if(L.empty()) continue;
+      // the last certain neighbour x at or before direction u->v in counter-clockwise order
+      int x = L.back();
+      for(int w : L) {
+        if(w == v || ccw_less(u, w, v)) x = w;
+        else break;
+      }
+      auto it = half_face_.find(half_key(u, x));
+      return it == half_face_.end() ? -1 : it->second;
+    }
+    return -1;
+  }
+
+  static int half(double dx, double dy) { return (dy > 0 || (dy == 0 && dx > 0)) ? 0 : 1; }
+  // exact angular order of the directions v->a and v->b starting at angle 0
+  bool ccw_less(int v, int a, int b) const
+  {
+    const int ha = half(pts_.x(a) - pts_.x(v), pts_.y(a) - pts_.y(v)), hb = half(pts_.x(b) - pts_.x(v), pts_.y(b) - pts_.y(v));
+    if(ha != hb) return ha < hb;
+    return pts_.orientation(v, a, b) > 0;
+  }
+  std::uint64_t half_key(int a, int b) const { return std::uint64_t(a) * std::uint64_t(n_) + std::uint64_t(b); }
+  std::uint64_t tri_key(int a, int b, int c) const
+  {
+    int s[3] = {a, b, c};
+    std::sort(s, s + 3);
+    return (std::uint64_t(s[0]) * std::uint64_t(n_) + std::uint64_t(s[1])) * std::uint64_t(n_) + std::uint64_t(s[2]);
+  }
+
+  void trace_faces()
+  {
+    for(int u = 0; u < n_; ++u)
+      for(int v : nbr_[u]) {
+        if(half_face_.count(half_key(u, v))) continue;
+        std::vector<int> cyc;
+        int a = u, b = v;
+        const int id = int(faces_.size());
+        while(!half_face_.count(half_key(a, b))) {
+          half_face_.emplace(half_key(a, b), id);
+          cyc.push_back(a);
+          // next: at b, the certain neighbour just before a in counter-clockwise order
+          const auto& L = nbr_[b];
+          const std::size_t k = std::size_t(std::find(L.begin(), L.end(), a) - L.begin());
+          const int c = L[(k + L.size() - 1) % L.size()];
+          a = b;
+          b = c;
+        }
+        faces_.push_back(cyc);
+      }
+  }
+
+  bool in_cone(const std::vector<int>& F, std::size_t i, std::size_t j) const
+  {
+    const std::size_t m = F.size();
+    const int a = F[i], b = F[j], prev = F[(i + m - 1) % m], next = F[(i + 1) % m];
+    if(pts_.orientation(prev, a, next) >= 0) return pts_.orientation(a, b, prev) > 0 && pts_.orientation(b, a, next) > 0;
+    return !(pts_.orientation(a, b, next) >= 0 && pts_.orientation(b, a, prev) >= 0);
+  }
+
+  double len(int a, int b) const { return std::hypot(pts_.x(b) - pts_.x(a), pts_.y(b) - pts_.y(a)); }
+
+  // alive empty counter-clockwise triangle (a, b, c), or -1
+  int live_triangle(int a, int b, int c) const
+  {
+    auto it = tri_map_.find(tri_key(a, b, c));
+    if(it == tri_map_.end() || pts_.orientation(a, b, c) <= 0) return -1;
+    const auto& T = tri_[it->second];
+    if(state_[T.edge[0]] == lmt_impossible || state_[T.edge[1]] == lmt_impossible || state_[T.edge[2]] == lmt_impossible) return -1;
+    return it->second;
+  }
+
+  // The face F (a counter-clockwise simple cycle) without interior point (c < 0) or with the one interior
+  // point c: Klincsek's program on the chains F[i..j] (indices modulo m, i < j < i + m), then, with c, a
+  // cyclic program over the spokes from c: consecutive spokes F[i], F[j] bound the triangle (c, F[i], F[j])
+  // and the chain F[i..j] closed by the chord F[i]F[j].
+  bool solve_face(const std::vector<int>& F, int c)
+  {
+    const std::size_t m = F.size();
+    if(m < 3) return false;
+    {
+      std::vector<int> s(F);
+      std::sort(s.begin(), s.end());
+      if(std::adjacent_find(s.begin(), s.end()) != s.end()) return false;   // not a simple cycle
+      double area = 0;
+      for(std::size_t i = 0; i < m; ++i)
+        area += pts_.x(F[i]) * pts_.y(F[(i + 1) % m]) - pts_.x(F[(i + 1) % m]) * pts_.y(F[i]);
+      if(!(area > 0)) return false;   // the outer face or an island's outline
+    }
+    const std::size_t L = 2 * m;   // chain (i, j): 0 <= i < m, i < j < i + m; stored at i * L + j
+    auto id = [L](std::size_t i, std::size_t j) { return i * L + j; };
+    auto at = [&](std::size_t i) { return F[i % m]; };
+    std::vector<double> W(m * L, HUGE_VAL), dlen(m * L, -1);
+    std::vector<int> K(m * L, -1);
+    for(std::size_t i = 0; i < m; ++i) {
+      W[id(i, i + 1)] = 0;
+      dlen[id(i, i + 1)] = 0;
+      for(std::size_t j = i + 2; j < i + m; ++j) {
+        if(j == i + m - 1) { dlen[id(i, j)] = 0; continue; }   // the boundary edge F[i-1] F[i]
+        const int e = index_.find(at(i), at(j));
+        if(e < 0 || state_[e] == lmt_impossible) continue;
+        if(in_cone(F, i, j % m) && in_cone(F, j % m, i)) dlen[id(i, j)] = len(at(i), at(j));
+      }
+    }
+    // chains up to m - 1 steps (a chain of m steps would close the cycle)
+    for(std::size_t d = 2; d < m; ++d)
+      for(std::size_t i = 0; i < m; ++i) {
+        const std::size_t j = i + d;
+        if(dlen[id(i, j)] < 0) continue;
+        double best = HUGE_VAL;
+        int bk = -1;
+        for(std::size_t k = i + 1; k < j; ++k) {
+          const std::size_t k0 = k % m;
+          const std::size_t kj = k0 + (j - k);   // chain (k, j) re-based at k mod m
+          if(dlen[id(i, k)] < 0 || dlen[id(k0, kj)] < 0) continue;
+          const double w = W[id(i, k)] + W[id(k0, kj)];
+          if(!(w < best) || live_triangle(at(i), at(k), at(j)) < 0) continue;
+          best = w;
+          bk = int(k);
+        }
+        if(bk >= 0) { W[id(i, j)] = best + dlen[id(i, j)]; K[id(i, j)] = bk; }
+      }
+    auto emit = [&](std::size_t i, std::size_t j) {
+      std::vector<std::pair<std::size_t, std::size_t>> stack{{i, j}};
+      while(!stack.empty()) {
+        const auto ij = stack.back();
+        stack.pop_back();
+        if(ij.second - ij.first < 2) continue;
+        const std::size_t k = std::size_t(K[id(ij.first, ij.second)]);
+        dp_tri_.push_back(live_triangle(at(ij.first), at(k), at(ij.second)));
+        stack.emplace_back(ij.first, k);
+        stack.emplace_back(k % m, k % m + (ij.second - k));
+      }
+    };
+    if(c < 0) {
+      if(K[id(0, m - 1)] < 0) return false;
+      emit(0, m - 1);
+      return true;
+    }
+    // one interior point: spokes c F[i]; sector (i, j) = triangle (c, F[i], F[j]) + chain (i, j)
+    auto sector = [&](std::size_t i, std::size_t j) {   // j - i in 1 .. m - 1
+      if(W[id(i % m, i % m + (j - i))] == HUGE_VAL) return HUGE_VAL;
+      if(live_triangle(c, at(i), at(j)) < 0) return HUGE_VAL;
+      return W[id(i % m, i % m + (j - i))];
+    };
+    std::vector<double> spoke(m, -1);
+    for(std::size_t i = 0; i < m; ++i) {
+      const int e = index_.find(c, F[i]);
+      if(e >= 0 && state_[e] != lmt_impossible) spoke[i] = len(c, F[i]);
+    }
+    double best = HUGE_VAL;
+    std::vector<int> best_prev;
+    std::size_t best_s = 0;
+    std::vector<double> D(m + 1);
+    std::vector<int> prev(m + 1);
+    for(std::size_t s = 0; s < m; ++s) {   // s: the first spoke
+      if(spoke[s] < 0) continue;
+      // D[t]: chain s .. s + t with spokes at both ends, t = 0 .. m
+      std::fill(D.begin(), D.end(), HUGE_VAL);
+      D[0] = spoke[s];
+      for(std::size_t t = 1; t <= m; ++t) {
+        if(spoke[(s + t) % m] < 0) continue;
+        for(std::size_t u = 0; u < t; ++u) {
+          if(D[u] == HUGE_VAL || (u == 0 && t == m)) continue;
+          const double w = sector(s + u, s + t);
+          if(w == HUGE_VAL) continue;
+          const double v = D[u] + w + (t == m ? 0 : spoke[(s + t) % m]);
+          if(v < D[t]) { D[t] = v; prev[t] = int(u); }
+        }
+      }
+      if(D[m] < best) { best = D[m]; best_prev = prev; best_s = s; }
+    }
+    if(best == HUGE_VAL) return false;
+    for(std::size_t t = m; t > 0;) {
+      const std::size_t u = std::size_t(best_prev[t]);
+      const std::size_t i = best_s + u, j = best_s + t;
+      dp_tri_.push_back(live_triangle(c, at(i), at(j)));
+      emit(i % m, i % m + (j - i));
+      t = u;
+    }
+    ++one_point_faces_;
+    return true;
+  }
+
+  const P& pts_;
+  const std::vector<Edge>& edges_;
+  const Edge_index& index_;
+  const std::vector<Lp_triangle>& tri_;
+  const std::vector<char>& state_;
+  int n_;
+  std::vector<std::vector<int>> nbr_;
+  std::unordered_map<std::uint64_t, int> tri_map_, half_face_;
+  std::vector<std::vector<int>> faces_;
+  std::vector<char> solved_;
+  std::vector<int> dp_tri_;
+  std::size_t one_point_faces_ = 0;
+};
+
+} // namespace internal
+} // namespace Minimum_weight_triangulation_2
+} // namespace CGAL
+
+#endif // CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_FACE_DP_2_H
