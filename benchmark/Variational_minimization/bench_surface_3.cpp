@@ -18,6 +18,7 @@
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
@@ -71,23 +72,6 @@ void release_memory()
 // Process CPU time in seconds (the machine may be shared: wall-clock times then overstate the cost).
 double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
-double scherk_area(double a)
-{
-  static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831, 0.9061798459386640};
-  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
-                              0.2369268850561891};
-  const int m = 160;
-  const double h = 2 * a / m;
-  double sum = 0;
-  for(int i = 0; i < m; ++i)
-    for(int j = 0; j < m; ++j)
-      for(int k = 0; k < 5; ++k)
-        for(int l = 0; l < 5; ++l) {
-          const double u = -a + h * (i + 0.5 + 0.5 * x[k]), v = -a + h * (j + 0.5 + 0.5 * x[l]);
-          sum += w[k] * w[l] * std::sqrt(1 + std::tan(u) * std::tan(u) + std::tan(v) * std::tan(v));
-        }
-  return sum * h * h / 4;
-}
 
 template <class Engine>
 double time_cut(const VM::Plane_arrangement_3& A, const std::vector<double>& w, const VM::Surface_problem_3& P,
@@ -167,7 +151,7 @@ void part_table22(bool quick, bool large, double budget, const std::string& pref
 
 void part_scherk(bool quick, const std::string& prefix)
 {
-  const double a = 1.2, exact = scherk_area(a);
+  const double a = 1.2, exact = VM::scherk_surface_area(a);
   std::printf("\n== 2. Scherk's surface f = ln(cos y / cos x) on [-1.2, 1.2]^2, exact area %.10f (Gauss quadrature).\n"
               "   planes: slope-limited |slope| <= 3, 20%% pencils, 4 boundary segments per side; relaxation: L-BFGS on "
               "20^2, 40^2, 80^2 grids. Two seeds per size.\n\n", exact);

@@ -8,6 +8,7 @@
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
 #include <CGAL/Variational_minimization/refine_surface_3.h>
@@ -95,24 +96,6 @@ struct Surface_run
   std::string ply, svg, summary;
 };
 
-// Area of Scherk's surface over [-a, a]^2 by Gauss-Legendre quadrature.
-inline double scherk_area_cli(double a)
-{
-  static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831, 0.9061798459386640};
-  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
-                              0.2369268850561891};
-  const int m = 80;
-  const double h = 2 * a / m;
-  double sum = 0;
-  for(int i = 0; i < m; ++i)
-    for(int j = 0; j < m; ++j)
-      for(int k = 0; k < 5; ++k)
-        for(int l = 0; l < 5; ++l) {
-          const double u = -a + h * (i + 0.5 + 0.5 * x[k]), v = -a + h * (j + 0.5 + 0.5 * x[l]);
-          sum += w[k] * w[l] * std::sqrt(1 + std::tan(u) * std::tan(u) + std::tan(v) * std::tan(v));
-        }
-  return sum * h * h / 4;
-}
 
 // An oblique view of a triangulated surface, painter's order, coloured by height and shaded; the boundary in red.
 inline void write_surface_svg(const std::string& path, const VM3::Minimal_surface_3& s, const VM3::Surface_problem_3& p,
@@ -346,7 +329,7 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
   } else {
     functional = "area";
     run_surface_with(s, VM3::Area_functional_3(), run, progress);
-    if(s.problem == "scherk") run.exact = scherk_area_cli(1.2);
+    if(s.problem == "scherk") run.exact = VM3::scherk_surface_area(1.2, 80);
   }
   run.seconds_total = seconds_since(t_start);
   const std::filesystem::path folder = prepare_output_folder(s.output);

@@ -6,6 +6,7 @@
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/surface_facet_weights_3.h>
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
@@ -56,24 +57,6 @@ VM::Surface_problem_3 scherk_problem(int segments)
   return P;
 }
 
-// Area of Scherk's surface over [-a, a]^2 by Gauss-Legendre quadrature (the integrand is smooth there).
-double scherk_area(double a)
-{
-  static const double x[5] = {-0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831, 0.9061798459386640};
-  static const double w[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
-                              0.2369268850561891};
-  const int m = 60; // panels per axis
-  const double h = 2 * a / m;
-  double sum = 0;
-  for(int i = 0; i < m; ++i)
-    for(int j = 0; j < m; ++j)
-      for(int k = 0; k < 5; ++k)
-        for(int l = 0; l < 5; ++l) {
-          const double u = -a + h * (i + 0.5 + 0.5 * x[k]), v = -a + h * (j + 0.5 + 0.5 * x[l]);
-          sum += w[k] * w[l] * std::sqrt(1 + std::pow(std::tan(u), 2) + std::pow(std::tan(v), 2));
-        }
-  return sum * h * h / 4;
-}
 
 } // namespace
 
@@ -99,7 +82,7 @@ TEST_CASE("minimize_surface_functional_3: linear boundary data gives the plane",
 TEST_CASE("minimize_surface_functional_3: Scherk's surface, error falls with the cells", "[variational][surface]")
 {
   const VM::Surface_problem_3 P = scherk_problem(4);
-  const double exact = scherk_area(1.2);
+  const double exact = VM::scherk_surface_area(1.2, 60);
   CHECK(std::abs(exact - 9.9497) < 1e-3);
   VM::Surface_plane_options_3 o;
   o.distribution = VM::Plane_distribution_3::slope_limited;
