@@ -7,6 +7,7 @@
 
 #include "cli_common.h"
 #include "cmd_mincut.h" // Input_error
+#include "mesh_input.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -299,12 +300,14 @@ inline Run_summary run(const Mesh& fine, const Run_parameters& p, const std::fil
   return sum;
 }
 
+// The mesh reader of the mesh commands (mesh_input.h): OFF / PLY / OBJ / STL, repaired and triangulated when
+// needed (with a note on stderr), or the generated @torus / @icosphere.
 inline Mesh read_triangle_mesh(const std::string& path)
 {
   Mesh m;
-  if(!CGAL::IO::read_polygon_mesh(path, m) || num_faces(m) == 0)
-    throw Input_error("cannot read a polygon mesh from '" + path + "'");
-  if(!CGAL::is_triangle_mesh(m)) throw Input_error("'" + path + "' is not a triangle mesh");
+  std::vector<std::string> notes;
+  load_geodesics_mesh(path, m, notes);
+  for(const std::string& note : notes) std::cerr << "mdcs silhouette: note: " << note << "\n";
   return m;
 }
 
@@ -357,6 +360,8 @@ inline const char* silhouette_usage()
          "  Simplified silhouette of a triangle mesh (thesis chapter 5). A coarse mesh (half-edge collapses,\n"
          "  smoothing) guides the choice of fine silhouette loops (picking, method A) or the minimal-weight\n"
          "  loops of fine edges that follow the coarse silhouette loops (mapping, method B, min cut).\n"
+         "  MESH                OFF, PLY, OBJ or STL (repaired / triangulated when needed, with a note), or the\n"
+         "                      generated @torus / @icosphere\n"
          "  --view A,E          perspective eye at azimuth A and elevation E degrees, 2.5 diagonals away (30,20)\n"
          "  --up x|y|z          the up axis of the orbit (y)\n"
          "  --orthographic      orthographic view along the same direction instead of the perspective eye\n"

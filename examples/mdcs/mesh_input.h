@@ -134,7 +134,7 @@ inline void load_geodesics_mesh(const std::string& path, Geo_mesh& mesh, std::ve
       throw Input_error("cannot read a polygon mesh from '" + path + "' (OFF, PLY, OBJ or STL; not a polygon mesh even after repair)");
     if(!faces(mesh).empty())
       notes.push_back("the file is not a valid polygon mesh as is: it was repaired and oriented (CGAL::Polygon_mesh_processing::IO::"
-                      "read_polygon_mesh); vertex and face indices refer to the repaired mesh written to distances.ply");
+                      "read_polygon_mesh); vertex and face indices refer to the repaired mesh (the one the command writes out)");
   }
   if(faces(mesh).empty()) throw Input_error("'" + path + "' has no face");
   if(mesh.has_garbage()) mesh.collect_garbage();
