@@ -155,12 +155,7 @@ void part_scherk(bool quick, const std::string& prefix)
   std::printf("\n== 2. Scherk's surface f = ln(cos y / cos x) on [-1.2, 1.2]^2, exact area %.10f (Gauss quadrature).\n"
               "   planes: slope-limited |slope| <= 3, 20%% pencils, 4 boundary segments per side; relaxation: L-BFGS on "
               "20^2, 40^2, 80^2 grids. Two seeds per size.\n\n", exact);
-  VM::Surface_problem_3 P;
-  P.domain = CGAL::Bbox_2(-a, -a, a, a);
-  P.zmin = -1.1;
-  P.zmax = 1.1;
-  P.boundary_segments_per_side = 4;
-  P.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
+  const VM::Surface_problem_3 P = VM::scherk_surface_problem_3(4);
   mdcs_bench::Table table({"planes", "seed", "cells", "raw_energy", "raw_rel_error", "relaxed_energy",
                            "relaxed_rel_error", "solve_s", "relax_s"});
   std::vector<long> sizes = {40, 80, 120, 160, 200, 240};

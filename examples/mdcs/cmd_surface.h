@@ -235,11 +235,7 @@ inline VM3::Surface_problem_3 surface_problem_for(const std::string& name, int s
     P.lower_boundary = [](double, double) { return 0.0; };
     P.upper_boundary = [](double, double) { return 1.0; };
   } else {
-    const double a = 1.2;
-    P.domain = CGAL::Bbox_2(-a, -a, a, a);
-    P.zmin = -1.1;
-    P.zmax = 1.1;
-    P.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
+    P = VM3::scherk_surface_problem_3(segments);
   }
   return P;
 }

@@ -45,19 +45,6 @@ VM::Minimal_surface_3 solve(const VM::Surface_problem_3& P, const std::vector<VM
   return s;
 }
 
-VM::Surface_problem_3 scherk_problem(int segments)
-{
-  VM::Surface_problem_3 P;
-  const double a = 1.2;
-  P.domain = CGAL::Bbox_2(-a, -a, a, a);
-  P.zmin = -1.1;
-  P.zmax = 1.1;
-  P.boundary_segments_per_side = segments;
-  P.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
-  return P;
-}
-
-
 } // namespace
 
 TEST_CASE("minimize_surface_functional_3: linear boundary data gives the plane", "[variational][surface]")
@@ -81,7 +68,7 @@ TEST_CASE("minimize_surface_functional_3: linear boundary data gives the plane",
 
 TEST_CASE("minimize_surface_functional_3: Scherk's surface, error falls with the cells", "[variational][surface]")
 {
-  const VM::Surface_problem_3 P = scherk_problem(4);
+  const VM::Surface_problem_3 P = VM::scherk_surface_problem_3(4);
   const double exact = VM::scherk_surface_area(1.2, 60);
   CHECK(std::abs(exact - 9.9497) < 1e-3);
   VM::Surface_plane_options_3 o;
@@ -100,7 +87,7 @@ TEST_CASE("minimize_surface_functional_3: Scherk's surface, error falls with the
 
 TEST_CASE("minimize_surface_functional_3: the max-flow engines agree", "[variational][surface]")
 {
-  const VM::Surface_problem_3 P = scherk_problem(4);
+  const VM::Surface_problem_3 P = VM::scherk_surface_problem_3(4);
   const auto planes = VM::surface_planes_3(P, 40);
   const VM::Minimal_surface_3 pf = solve(P, planes, VM::Area_functional_3(), CGAL::Min_cut::Pseudoflow_max_flow());
   const VM::Minimal_surface_3 pr = solve(P, planes, VM::Area_functional_3(), CGAL::Min_cut::Push_relabel_max_flow());
@@ -160,7 +147,7 @@ TEST_CASE("minimize_surface_functional_3: relaxed boundary", "[variational][surf
 
 TEST_CASE("surface_facet_weights_3: closed forms agree with quadrature", "[variational][surface]")
 {
-  const VM::Surface_problem_3 P = scherk_problem(4);
+  const VM::Surface_problem_3 P = VM::scherk_surface_problem_3(4);
   const VM::Plane_arrangement_3 A = VM::build_surface_arrangement_3(P, VM::surface_planes_3(P, 30));
   const auto area = VM::surface_facet_weights_3(A, P, VM::Area_functional_3());
   const auto quad = VM::surface_facet_weights_3(

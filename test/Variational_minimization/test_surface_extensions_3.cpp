@@ -5,6 +5,7 @@
 // candidates.
 #include <catch2/catch.hpp>
 
+#include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/refine_surface_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
@@ -33,13 +34,8 @@ VM::Minimal_surface_3 solve(const VM::Surface_problem_3& P, std::size_t n, const
 
 TEST_CASE("relax_surface_3: Scherk's surface to 1e-4 after relaxation", "[variational][surface][relaxation]")
 {
-  VM::Surface_problem_3 P;
+  const VM::Surface_problem_3 P = VM::scherk_surface_problem_3(4);
   const double a = 1.2;
-  P.domain = CGAL::Bbox_2(-a, -a, a, a);
-  P.zmin = -1.1;
-  P.zmax = 1.1;
-  P.boundary_segments_per_side = 4;
-  P.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
   VM::Surface_plane_options_3 o;
   o.distribution = VM::Plane_distribution_3::slope_limited;
   o.max_slope = 3;
@@ -93,13 +89,7 @@ TEST_CASE("select_planes_3: the energy never increases", "[variational][surface]
 
 TEST_CASE("refine_surface_3: no worse than its runs; the envelope only restricts", "[variational][surface][refinement]")
 {
-  VM::Surface_problem_3 P;
-  const double a = 1.2;
-  P.domain = CGAL::Bbox_2(-a, -a, a, a);
-  P.zmin = -1.1;
-  P.zmax = 1.1;
-  P.boundary_segments_per_side = 4;
-  P.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
+  const VM::Surface_problem_3 P = VM::scherk_surface_problem_3(4);
   VM::Surface_plane_options_3 o;
   o.distribution = VM::Plane_distribution_3::slope_limited;
   o.max_slope = 3;

@@ -6,6 +6,8 @@
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_ANALYTIC_SOLUTIONS_3_H
 #define CGAL_VARIATIONAL_MINIMIZATION_ANALYTIC_SOLUTIONS_3_H
 
+#include <CGAL/Variational_minimization/Surface_problem_3.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -15,6 +17,25 @@ namespace Variational_minimization {
 /// \ingroup PkgVariationalMinimizationSurfaces
 /// Scherk's first surface \f$ f(x, y) = \ln(\cos y / \cos x) \f$, a minimal surface on \f$ |x|, |y| < \pi/2 \f$.
 inline double scherk_surface_height(double x, double y) { return std::log(std::cos(y) / std::cos(x)); }
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief The area problem whose minimiser is Scherk's surface: the domain \f$ [-1.2, 1.2]^2 \f$ (where the surface
+  stays within \f$ |z| < 1.1 \f$), the box \f$ [-1.1, 1.1] \f$ in z, fixed boundary values
+  `scherk_surface_height()` sampled at `segments_per_side` segments per side. Its reference energy is
+  `scherk_surface_area(1.2)`.
+*/
+inline Surface_problem_3 scherk_surface_problem_3(int segments_per_side = 4)
+{
+  Surface_problem_3 P;
+  const double a = 1.2;
+  P.domain = CGAL::Bbox_2(-a, -a, a, a);
+  P.zmin = -1.1;
+  P.zmax = 1.1;
+  P.boundary_segments_per_side = segments_per_side;
+  P.lower_boundary = [](double x, double y) { return scherk_surface_height(x, y); };
+  return P;
+}
 
 /*!
   \ingroup PkgVariationalMinimizationSurfaces
