@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 #include <sys/resource.h>
+#include <time.h>
 
 namespace mdcs_bench {
 
@@ -16,6 +17,15 @@ inline double now_seconds()
 {
   using clock = std::chrono::steady_clock;
   return std::chrono::duration<double>(clock::now().time_since_epoch()).count();
+}
+
+// CPU time of this process (user + system), in seconds: on a shared machine it measures the one-core cost
+// of a single-threaded phase without the time spent waiting for a core.
+inline double cpu_seconds()
+{
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 inline double median(std::vector<double> v)

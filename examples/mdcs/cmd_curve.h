@@ -34,7 +34,8 @@ inline const char* curve_usage()
     "  --n N               regular grids: C_n parameter (default 12 for regular, 2 for regular-pl)\n"
     "  --pencil-fraction F share of the random lines through each fixed end point (default 0.1)\n"
     "  --seed S            random seed (default 1)\n"
-    "  --engine pf|pr|bk   max-flow engine: pseudoflow (default), push-relabel or Boykov-Kolmogorov\n"
+    "  --engine planar|pf|pr|bk  min-cut engine: the planar cut (default; a shortest path in the dual), or the\n"
+    "                      max-flow engines pseudoflow, push-relabel or Boykov-Kolmogorov\n"
     "  --no-local          skip the local-descent comparison\n"
     "  --output DIR        output folder (default mdcs-output); files NAME.svg/.png/.csv/_summary.txt\n"
     "  --name NAME         base name of the output files (default curve)\n"
@@ -53,7 +54,7 @@ struct Curve_settings
   long n = -1;
   double pencil_fraction = 0.1;
   long seed = 1;
-  std::string engine = "pf";
+  std::string engine = "planar";
   bool local = true;
   std::string output = "mdcs-output";
   std::string name = "curve";
@@ -113,8 +114,8 @@ inline Curve_settings parse_curve_settings(const Options& o)
   if(!(s.pencil_fraction >= 0 && s.pencil_fraction <= 1)) throw Usage_error("--pencil-fraction must be in [0, 1]");
   s.seed = o.integer("seed", s.seed, 0);
   s.engine = o.text("engine", s.engine);
-  if(s.engine != "pf" && s.engine != "pr" && s.engine != "bk")
-    throw Usage_error("--engine must be pf, pr or bk (got '" + s.engine + "')");
+  if(s.engine != "planar" && s.engine != "pf" && s.engine != "pr" && s.engine != "bk")
+    throw Usage_error("--engine must be planar, pf, pr or bk (got '" + s.engine + "')");
   s.local = !o.has("no-local");
   o.text("no-local", "");
   s.output = o.text("output", s.output);
@@ -188,8 +189,10 @@ Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& pro
       run.curve = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Boykov_kolmogorov_max_flow(), progress);
     else if(s.engine == "pr")
       run.curve = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Push_relabel_max_flow(), progress);
-    else
+    else if(s.engine == "pf")
       run.curve = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Pseudoflow_max_flow(), progress);
+    else
+      run.curve = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Planar_min_cut(), progress);
     run.seconds_solve = seconds_since(t2);
     const auto t3 = std::chrono::steady_clock::now();
     const VM::Minimal_curve_2 path = VM::directed_shortest_path_2(arrangement, weights, problem, progress);

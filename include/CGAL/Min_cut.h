@@ -20,5 +20,7 @@
 #include <CGAL/Min_cut/Pseudoflow_max_flow.h>
 #include <CGAL/Min_cut/Push_relabel_max_flow.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
+#include <CGAL/Min_cut/Planar_dual.h>
+#include <CGAL/Min_cut/solve_planar_min_cut.h>
 
 #endif // CGAL_MIN_CUT_H

@@ -15,7 +15,7 @@ using MDCS_test::relative_difference;
 
 namespace {
 
-// Solves with the cut (all three engines) and the shortest path and checks the duality theorem on the way.
+// Solves with the cut (the planar cut and all three max-flow engines) and the shortest path and checks the duality theorem on the way.
 template <class Functional>
 MDCS_test::Checked_solve solve_checked(const VM::Curve_problem_2& problem,
                                        const std::vector<VM::Arrangement_line_2>& lines, const Functional& G)
@@ -26,15 +26,19 @@ MDCS_test::Checked_solve solve_checked(const VM::Curve_problem_2& problem,
   REQUIRE(s.cut.is_feasible == s.path.is_feasible);
   REQUIRE(s.cut.is_feasible == s.cut_pr.is_feasible);
   REQUIRE(s.cut.is_feasible == s.cut_bk.is_feasible);
+  REQUIRE(s.cut.is_feasible == s.cut_pf.is_feasible);
   if(s.cut.is_feasible) {
     // Duality: cut value == shortest path length; the returned curve's energy is the cut value.
     CHECK(relative_difference(s.cut.solver_value, s.path.solver_value) <= 1e-9);
     CHECK(relative_difference(s.cut.energy, s.cut.solver_value) <= 1e-9);
     CHECK(relative_difference(s.path.energy, s.path.solver_value) <= 1e-9);
+    CHECK(relative_difference(s.cut_pf.solver_value, s.cut.solver_value) <= 1e-9);
     CHECK(relative_difference(s.cut_pr.solver_value, s.cut.solver_value) <= 1e-9);
     CHECK(relative_difference(s.cut_bk.solver_value, s.cut.solver_value) <= 1e-9);
-    CHECK(s.cut_pr.edges == s.cut.edges); // all engines return the same (minimal source side) cut
-    CHECK(s.cut_bk.edges == s.cut.edges);
+    CHECK(relative_difference(s.cut_pf.energy, s.cut_pf.solver_value) <= 1e-9);
+    CHECK(s.cut_pr.edges == s.cut_pf.edges); // the max-flow engines return the same (minimal source side) cut
+    CHECK(s.cut_bk.edges == s.cut_pf.edges);
+    CHECK(s.cut.edges == s.cut_pf.edges); // no ties in these instances: the planar cut is that cut too
     // The curve is a function from the left wall to the right wall meeting the end conditions.
     REQUIRE(s.cut.polyline.size() >= 2);
     CHECK(s.cut.polyline.front().x() == problem.box.xmin());

@@ -35,7 +35,8 @@ inline std::vector<VM::Arrangement_line_2> lines_for(const VM::Curve_problem_2& 
 
 struct Checked_solve
 {
-  VM::Minimal_curve_2 cut;          // default engine (pseudoflow)
+  VM::Minimal_curve_2 cut;          // default engine (planar: shortest path in the dual of the network)
+  VM::Minimal_curve_2 cut_pf;       // pseudoflow
   VM::Minimal_curve_2 cut_pr;       // Boost push-relabel
   VM::Minimal_curve_2 cut_bk;       // Boost Boykov-Kolmogorov
   VM::Minimal_curve_2 path;         // directed shortest path (oracle)
@@ -46,6 +47,7 @@ inline Checked_solve solve_both_ways(const VM::Curve_problem_2& problem, const V
 {
   Checked_solve s;
   s.cut = VM::minimize_curve_functional_2(arrangement, weights, problem);
+  s.cut_pf = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Pseudoflow_max_flow());
   s.cut_pr = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Push_relabel_max_flow());
   s.cut_bk = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Boykov_kolmogorov_max_flow());
   s.path = VM::directed_shortest_path_2(arrangement, weights, problem);

@@ -7,6 +7,7 @@
 #define CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_CURVE_DUAL_NETWORK_2_H
 
 #include <CGAL/Min_cut/Flow_network.h>
+#include <CGAL/Min_cut/Planar_dual.h>
 #include <CGAL/Variational_minimization/Curve_problem_2.h>
 #include <CGAL/Variational_minimization/Line_arrangement_2.h>
 #include <CGAL/Variational_minimization/internal/curve_walls_2.h>
@@ -23,33 +24,53 @@ namespace internal {
 // a terminal: floor edges to the source and ceiling edges to the sink with the edge weight (the curve may run
 // along them), side-wall edges below the end range to the source and above it to the sink with infinite
 // capacity, and side-wall edges inside a relaxed end range get no arc at all (thesis fig. 2.5).
+//
+// When `dual` is given it receives the planar embedding of the network for solve_planar_min_cut(): the dual
+// edge of a facet is the arrangement edge itself, oriented with the facet's "from" node (or the source) on its
+// right; the curve runs from the admissible left-wall vertices (start) to the admissible right-wall ones (end).
 inline CGAL::Min_cut::Flow_network<double> curve_dual_network_2(const Line_arrangement_2& arrangement,
                                                                 const std::vector<double>& weights,
-                                                                const Curve_problem_2& problem)
+                                                                const Curve_problem_2& problem,
+                                                                CGAL::Min_cut::Planar_dual* dual = nullptr)
 {
   typedef CGAL::Min_cut::Flow_network<double> Network;
+  typedef CGAL::Min_cut::Planar_dual Dual;
   typedef Line_arrangement_2 Arr;
   const double inf = Network::infinity();
 
   Network network;
   network.reserve(arrangement.number_of_faces(), arrangement.number_of_edges(), 0);
   network.add_nodes(arrangement.number_of_faces());
+  if(dual != nullptr) {
+    dual->clear();
+    dual->number_of_vertices = arrangement.number_of_vertices();
+    dual->edges.reserve(arrangement.number_of_edges());
+  }
+  // The edge's own direction if `right_node` lies on its right, else the reverse.
+  auto dual_edge = [&](const Arr::Edge& e, Arr::Face_index right_node) {
+    return right_node == e.right_face ? Dual::Edge{e.source, e.target} : Dual::Edge{e.target, e.source};
+  };
 
   for(std::size_t i = 0; i < arrangement.number_of_edges(); ++i) {
     const Arr::Edge& e = arrangement.edge(Arr::Edge_index(i));
     const Network::Facet_index id = Network::Facet_index(i);
     switch(e.kind) {
     case Arr::LINE_EDGE:
-      if(arrangement.is_vertical(Arr::Edge_index(i)))
+      if(arrangement.is_vertical(Arr::Edge_index(i))) {
         network.add_facet(e.left_face, e.right_face, inf, inf, id);
-      else // left-to-right edge: the right face is below, the left face above
+        if(dual != nullptr) dual->edges.push_back(dual_edge(e, e.left_face));
+      } else { // left-to-right edge: the right face is below, the left face above
         network.add_facet(e.right_face, e.left_face, weights[i], inf, id);
+        if(dual != nullptr) dual->edges.push_back(dual_edge(e, e.right_face));
+      }
       break;
-    case Arr::BOTTOM_WALL:
+    case Arr::BOTTOM_WALL: // the source lies outside, below: on the right of the edge, the cell on its left
       network.add_source_facet(e.left_face, weights[i], id);
+      if(dual != nullptr) dual->source_edges.push_back(dual_edge(e, e.right_face));
       break;
     case Arr::TOP_WALL:
       network.add_sink_facet(e.right_face, weights[i], id);
+      if(dual != nullptr) dual->sink_edges.push_back(dual_edge(e, e.right_face));
       break;
     default:
       break; // side walls below
@@ -64,11 +85,17 @@ inline CGAL::Min_cut::Flow_network<double> curve_dual_network_2(const Line_arran
       const Arr::Edge& e = arrangement.edge(edges[k]);
       // Bottom-to-top wall edges: the box interior is right of the left wall and left of the right wall.
       const Arr::Face_index inside = (wall == Arr::LEFT_WALL) ? e.right_face : e.left_face;
-      if(c.edge_position[k] == BELOW_END_RANGE)
+      const Arr::Face_index outside = (wall == Arr::LEFT_WALL) ? e.left_face : e.right_face;
+      if(c.edge_position[k] == BELOW_END_RANGE) {
         network.add_source_facet(inside, inf, edges[k]);
-      else if(c.edge_position[k] == ABOVE_END_RANGE)
+        if(dual != nullptr) dual->source_edges.push_back(dual_edge(e, outside));
+      } else if(c.edge_position[k] == ABOVE_END_RANGE) {
         network.add_sink_facet(inside, inf, edges[k]);
+        if(dual != nullptr) dual->sink_edges.push_back(dual_edge(e, inside));
+      }
     }
+    if(dual != nullptr)
+      (wall == Arr::LEFT_WALL ? dual->start_vertices : dual->end_vertices) = c.admissible_vertices;
   }
   return network;
 }
