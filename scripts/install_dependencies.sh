@@ -12,6 +12,7 @@ packages=(
   catch2                                # test framework (v2)
   libglpk-dev coinor-libclp-dev         # LP solvers (minimum weight triangulation)
   libtbb-dev                            # optional parallelism
+  libopenmesh-dev                       # OpenMesh: the tests run the mesh algorithms on its TriMesh too
   doxygen libjs-mathjax                 # offline manual (formulas through the local MathJax)
   librsvg2-bin                          # rsvg-convert: PNG copies of the SVG pictures
 )
