@@ -143,7 +143,8 @@ inline std::string report(const MWT::Mwt_result& r)
     << "solver            " << r.solver << (r.lp_exact ? " (verified in rational arithmetic)" : "") << "\n"
     << "candidate edges   " << s.candidate_edges << "\n"
     << "empty triangles   " << s.empty_triangles << " (LP columns " << s.lp_columns << ", rows " << s.lp_rows << ")\n"
-    << std::setprecision(4) << "time [s]          candidates " << s.time_candidates << ", triangles " << s.time_triangles
+    << std::setprecision(4) << "time [s]          setup " << s.time_setup << ", candidates " << s.time_candidates
+    << ", triangles " << s.time_triangles
     << ", LP build " << s.time_lp_build << ", LP solve " << s.time_lp_solve << ", certificate " << s.time_certificate
     << ", branch and bound " << s.time_branch_and_bound << ", total " << s.time_total << "\n";
   if(s.lmt_certain_edges > 0)

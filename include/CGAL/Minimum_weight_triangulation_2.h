@@ -18,5 +18,6 @@
 #include <CGAL/Minimum_weight_triangulation_2/minimum_weight_triangulation_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/convex_polygon_mwt_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/edge_based_lp_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/Mixed_integer_program_linear_program_solver.h>
 
 #endif // CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_H

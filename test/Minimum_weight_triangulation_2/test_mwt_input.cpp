@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Bad input gets a clear std::invalid_argument; the convex-polygon dynamic program against the LP and
-// brute force; cancellation by the progress callback.
+// brute force; cancellation by the progress callback (also inside branch and bound).
 
 // Needs both LP solver models (found and defined by the build: MDCS_HAS_CLP, MDCS_HAS_GLPK).
 #if defined(MDCS_HAS_CLP) && defined(MDCS_HAS_GLPK)
@@ -59,6 +59,25 @@ TEST_CASE("mwt: the progress callback can cancel", "[mwt][progress]")
   MWT::Mwt_options o;
   o.progress = [](const char* stage, double) { return std::string(stage) != "empty triangles"; };
   CHECK_THROWS_AS(MWT::minimum_weight_triangulation_2(uniform_points(50, 1), o), CGAL::MDCS::Operation_cancelled);
+}
+
+TEST_CASE("mwt: branch and bound has a default time limit and stops when the callback says so", "[mwt][progress]")
+{
+  CHECK(MWT::Mwt_options().branch_and_bound_time_limit > 0);
+  // the 41-wheel's LP is fractional; the first "branch and bound" call comes before GLPK starts, later ones
+  // from inside GLPK's branch and cut
+  int calls = 0;
+  MWT::Mwt_options o;
+  o.progress = [&calls](const char* stage, double) { return std::string(stage) != "branch and bound" || ++calls < 2; };
+  CHECK_THROWS_AS(MWT::minimum_weight_triangulation_2(wheel(41), o), CGAL::MDCS::Operation_cancelled);
+  CHECK(calls == 2);
+  // without cancellation the same run ends with the branch-and-bound optimum
+  MWT::Mwt_options plain;
+  int bb_calls = 0;
+  plain.progress = [&bb_calls](const char* stage, double) { bb_calls += std::string(stage) == "branch and bound"; return true; };
+  const auto r = MWT::minimum_weight_triangulation_2(wheel(41), plain);
+  CHECK(r.status == MWT::Mwt_status::optimal_after_branch_and_bound);
+  CHECK(bb_calls > 2);
 }
 
 TEST_CASE("convex_polygon_mwt_2: against brute force and the LP", "[mwt][convex][oracle]")

@@ -87,6 +87,43 @@ TEST_CASE("mwt: a wrong dual vector gives no certificate, the right one does", "
   CHECK(good.weight == Approx(bad.weight).epsilon(1e-12));
 }
 
+TEST_CASE("mwt: the exact certificate (separated reduced costs) where the optimum is non-degenerate", "[mwt][certificate]")
+{
+  // Wheels with 5 to 7 rim points have a unique MWT and duals that separate it: proven without tolerance.
+  for(int k : {5, 6, 7}) {
+    const auto p = wheel(k);
+    const auto r = MWT::minimum_weight_triangulation_2(p);
+    INFO("k = " << k << ": " << r.message);
+    CHECK(r.certificate_exact);
+    CHECK(r.status == MWT::Mwt_status::certified_optimal);
+    CHECK(r.weight == Approx(brute_force_mwt(p)).epsilon(1e-12));
+  }
+  // The certificate holds for any dual vector: whenever one is given, also with perturbed duals, it agrees
+  // with brute force; on 30 points the perturbed duals do not separate.
+  struct Bad_duals
+  {
+    const char* name() const { return "bad"; }
+    MWT::Linear_program_solution solve(const MWT::Sparse_linear_program& lp) const
+    {
+      auto s = MWT::CLP_linear_program_solver().solve(lp);
+      for(double& y : s.dual) y *= 1.5;
+      return s;
+    }
+  };
+  for(unsigned seed = 1; seed <= 10; ++seed) {
+    const auto p = uniform_points(4 + int(seed % 5), seed);
+    const auto bad = MWT::minimum_weight_triangulation_2(p, MWT::Mwt_options(), Bad_duals(), nullptr);
+    const auto good = MWT::minimum_weight_triangulation_2(p);
+    INFO("seed " << seed);
+    const double brute = brute_force_mwt(p);
+    if(bad.certificate_exact) CHECK(bad.weight == Approx(brute).epsilon(1e-12));
+    if(good.certificate_exact) CHECK(good.weight == Approx(brute).epsilon(1e-12));
+  }
+  const auto bad30 = MWT::minimum_weight_triangulation_2(uniform_points(30, 11), MWT::Mwt_options(), Bad_duals(), nullptr);
+  CHECK_FALSE(bad30.certificate_exact);
+  CHECK(bad30.status == MWT::Mwt_status::optimal_uncertified);
+}
+
 TEST_CASE("mwt: the validator rejects broken triangulations", "[mwt][validation]")
 {
   const auto p = uniform_points(20, 13);

@@ -15,6 +15,10 @@ with inaccurate duals therefore yields `optimal_uncertified`, never a wrong "cer
 \cgalHasModel `CGAL::Minimum_weight_triangulation_2::CLP_linear_program_solver` (dual simplex; the default)
 \cgalHasModel `CGAL::Minimum_weight_triangulation_2::GLPK_linear_program_solver` (primal simplex with presolve;
 with `exact = true`, re-solved by `glp_exact` from the floating-point basis)
+\cgalHasModel `CGAL::Minimum_weight_triangulation_2::Mixed_integer_program_linear_program_solver` (any model of
+CGAL's `MixedIntegerProgramTraits`, e.g. `CGAL::GLPK_mixed_integer_program_traits` or
+`CGAL::SCIP_mixed_integer_program_traits`; primal values only, so its optima are validated but not certified;
+its `solve_binary()` can resolve fractional optima)
 */
 class LinearProgramSolver
 {

@@ -12,7 +12,11 @@
 
 #include <glpk.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <functional>
+#include <string>
 #include <memory>
 #include <vector>
 
@@ -77,8 +81,14 @@ public:
     return s;
   }
 
-  /// Solves the program with all columns binary (branch and cut). `time_limit_s <= 0`: no limit.
-  Linear_program_solution solve_binary(const Sparse_linear_program& lp, double time_limit_s = 0) const
+  /*!
+    Solves the program with all columns binary (branch and cut). `time_limit_s <= 0`: no limit.
+    `keep_going` (may be empty) is asked at every branch-and-cut callback of GLPK with the elapsed fraction of
+    the time limit (0 without a limit); when it returns false the search stops and the solution's message
+    starts with "cancelled".
+  */
+  Linear_program_solution solve_binary(const Sparse_linear_program& lp, double time_limit_s = 0,
+                                       std::function<bool(double)> keep_going = nullptr) const
   {
     Holder h(load(lp));
     glp_prob* P = h.get();
@@ -91,9 +101,16 @@ public:
     parm.presolve = GLP_ON;
     parm.mip_gap = 0.0;
     if(time_limit_s > 0) parm.tm_lim = int(std::min(time_limit_s * 1000.0, 2.0e9));
+    Callback_data data{keep_going, time_limit_s, std::chrono::steady_clock::now(), false};
+    if(keep_going) {
+      parm.cb_func = &callback;
+      parm.cb_info = &data;
+    }
     const int ret = glp_intopt(P, &parm);
     const int st = glp_mip_status(P);
-    s.message = "GLPK intopt returned " + std::to_string(ret) + ", status " + std::to_string(st);
+    s.message = std::string(data.cancelled ? "cancelled; " : "") + "GLPK intopt returned " + std::to_string(ret) +
+                ", status " + std::to_string(st);
+    if(data.cancelled) { s.status = Lp_status::failed; return s; }
     if(st == GLP_NOFEAS) { s.status = Lp_status::infeasible; return s; }
     if(st != GLP_OPT && st != GLP_FEAS) {
       s.status = ret == GLP_ETMLIM ? Lp_status::iteration_limit : Lp_status::failed;
@@ -106,7 +123,31 @@ public:
     return s;
   }
 
+  /// Whether a solution's message says that `keep_going` stopped the search.
+  static bool was_cancelled(const Linear_program_solution& s) { return s.message.compare(0, 9, "cancelled") == 0; }
+
 private:
+  struct Callback_data
+  {
+    std::function<bool(double)> keep_going;
+    double limit;
+    std::chrono::steady_clock::time_point start;
+    bool cancelled;
+  };
+
+  static void callback(glp_tree* tree, void* info)
+  {
+    Callback_data& d = *static_cast<Callback_data*>(info);
+    if(d.cancelled) return;
+    double fraction = 0;
+    if(d.limit > 0)
+      fraction = std::min(1.0, std::chrono::duration<double>(std::chrono::steady_clock::now() - d.start).count() / d.limit);
+    if(!d.keep_going(fraction)) {
+      d.cancelled = true;
+      glp_ios_terminate(tree);
+    }
+  }
+
   struct Deleter { void operator()(glp_prob* p) const { glp_delete_prob(p); } };
   typedef std::unique_ptr<glp_prob, Deleter> Holder;
 

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -51,6 +52,7 @@ public:
   Minimum_weight_triangulation_lp_2(const std::vector<Point_2>& points, const Mwt_options& options = Mwt_options())
     : input_(points), pts_(input_), options_(options)
   {
+    const auto t0 = Stage_clock::now();
     if(!options_.progress) options_.progress = [](const char*, double) { return true; };
     hull_ = internal::checked_hull_boundary(pts_);
     grid_.reset(new internal::Point_grid_2(pts_, 2.0));
@@ -64,6 +66,7 @@ public:
       throw std::invalid_argument("minimum_weight_triangulation_2: the bounding box diagonal is not finite and positive");
     stats_.points = pts_.size();
     stats_.hull_points = hull_.size();
+    stats_.time_setup = since(t0);
   }
 
   Minimum_weight_triangulation_lp_2(const Minimum_weight_triangulation_lp_2&) = delete;
@@ -86,7 +89,7 @@ public:
 
   void compute_candidate_edges()
   {
-    const auto t0 = clock::now();
+    const auto t0 = Stage_clock::now();
     if(options_.pruning == Pruning::diamond && (options_.metric != Edge_metric::L2 || options_.triangle_weight))
       throw std::invalid_argument("minimum_weight_triangulation_2: the diamond test is valid for the Euclidean metric only");
     edges_ = uses_diamond_test() ? internal::diamond_candidate_edges(pts_, *grid_, options_.progress)
@@ -107,8 +110,10 @@ public:
   void compute_empty_triangles()
   {
     if(!index_) compute_candidate_edges();
-    const auto t0 = clock::now();
-    auto all = internal::empty_triangles(pts_, *grid_, edges_, *index_, options_.progress);
+    const auto t0 = Stage_clock::now();
+    // a finer grid for the emptiness tests of small triangles (fewer points in a triangle's box)
+    internal::Point_grid_2 fine(pts_, 0.5);
+    auto all = internal::empty_triangles(pts_, fine, *index_, options_.progress);
     stats_.empty_triangles = all.size();
     stats_.time_triangles = since(t0);
     row_one_ = is_hull_;
@@ -127,7 +132,7 @@ public:
   void build_linear_program()
   {
     if(!triangles_done_) compute_empty_triangles();
-    const auto t0 = clock::now();
+    const auto t0 = Stage_clock::now();
     lp_ = Sparse_linear_program();
     row_of_edge_.assign(edges_.size(), -1);
     row_is_hull_.clear();
@@ -164,7 +169,9 @@ public:
   /*!
     Solves the LP with `solver` (a model of `LinearProgramSolver`), checks integrality, validates and
     certifies. A fractional optimum is resolved with `binary_solver(lp)` when `options.resolve_fractional`
-    and a binary solver is given (a callable returning a `Linear_program_solution` of the 0/1 program).
+    and a binary solver is given (a callable returning a `Linear_program_solution` of the 0/1 program). A
+    binary solver stopped by the progress callback returns a message starting with "cancelled"; `solve`
+    then throws `CGAL::MDCS::Operation_cancelled`.
   */
   template <class LpSolver>
   Mwt_result solve(const LpSolver& solver,
@@ -175,7 +182,7 @@ public:
     r.solver = solver.name();
     if(lp_.number_of_columns() == 0 && !fixed_.empty()) return solved_by_dynamic_program(r);
     if(!options_.progress("LP solve", 0)) throw CGAL::MDCS::Operation_cancelled("LP solve");
-    auto t0 = clock::now();
+    auto t0 = Stage_clock::now();
     const Linear_program_solution sol = solver.solve(lp_);
     stats_.time_lp_solve = since(t0);
     stats_.lp_iterations = sol.iterations;
@@ -188,7 +195,7 @@ public:
     const double fixed_part = fixed_weight_lower_bound();   // faces solved by the dynamic program
     r.lp_objective = sol.objective * scale_ + fixed_part;
     r.lp_exact = sol.exact;
-    t0 = clock::now();
+    t0 = Stage_clock::now();
     r.lower_bound = dual_lower_bound(sol.dual) + fixed_part;
     std::size_t fractional = 0;
     std::vector<std::array<int, 3>> chosen(fixed_);
@@ -208,8 +215,11 @@ public:
         r.triangles = chosen;
         r.weight = weight_of(chosen, &upper_weight_);
         const bool ok = r.lower_bound >= upper_weight_ - options_.certificate_tolerance * std::abs(upper_weight_);
-        r.status = ok ? Mwt_status::certified_optimal : Mwt_status::optimal_uncertified;
-        r.message = ok ? "integral LP optimum, dual bound certified" : "integral LP optimum, dual bound not certified";
+        r.certificate_exact = fixed_.empty() && reduced_costs_separate(sol.dual, sol.primal);
+        r.status = (ok || r.certificate_exact) ? Mwt_status::certified_optimal : Mwt_status::optimal_uncertified;
+        r.message = r.certificate_exact ? "integral LP optimum, proven the unique minimum (exact certificate)"
+                    : ok                ? "integral LP optimum, dual bound certified"
+                                        : "integral LP optimum, dual bound not certified";
       }
       stats_.time_certificate = since(t0);
       return finish(r);
@@ -221,9 +231,11 @@ public:
       return finish(r);
     }
     if(!options_.progress("branch and bound", 0)) throw CGAL::MDCS::Operation_cancelled("branch and bound");
-    t0 = clock::now();
+    t0 = Stage_clock::now();
     const Linear_program_solution mip = binary_solver(lp_);
     stats_.time_branch_and_bound = since(t0);
+    // a binary solver stopped by the progress callback says so at the start of its message
+    if(mip.message.compare(0, 9, "cancelled") == 0) throw CGAL::MDCS::Operation_cancelled("branch and bound");
     if(!options_.progress("branch and bound", 1)) throw CGAL::MDCS::Operation_cancelled("branch and bound");
     if(mip.status != Lp_status::optimal || mip.primal.size() != lp_.number_of_columns()) {
       r.status = Mwt_status::fractional_bound_only;
@@ -272,14 +284,22 @@ public:
   }
 
 private:
-  typedef std::chrono::steady_clock clock;
+#if defined(MDCS_MWT_CPU_TIMERS)
+  // stage times in processor time of the process (benchmarks on a shared machine)
+  struct Stage_clock
+  {
+    static double now() { return double(std::clock()) / CLOCKS_PER_SEC; }
+  };
+  static double since(double t0) { return Stage_clock::now() - t0; }
+#else
+  typedef std::chrono::steady_clock Stage_clock;
+  static double since(Stage_clock::time_point t0) { return std::chrono::duration<double>(Stage_clock::now() - t0).count(); }
+#endif
   typedef CGAL::Interval_nt<true> Interval;
-
-  static double since(clock::time_point t0) { return std::chrono::duration<double>(clock::now() - t0).count(); }
 
   Mwt_result finish(Mwt_result& r)
   {
-    stats_.time_total = stats_.time_candidates + stats_.time_triangles + stats_.time_lmt + stats_.time_face_dp + stats_.time_lp_build + stats_.time_lp_solve +
+    stats_.time_total = stats_.time_setup + stats_.time_candidates + stats_.time_triangles + stats_.time_lmt + stats_.time_face_dp + stats_.time_lp_build + stats_.time_lp_solve +
                         stats_.time_certificate + stats_.time_branch_and_bound;
     r.statistics = stats_;
     return r;
@@ -291,27 +311,26 @@ private:
   {
     if(options_.metric != Edge_metric::L2 || options_.triangle_weight)
       throw std::invalid_argument("minimum_weight_triangulation_2: the LMT-skeleton is implemented for the Euclidean metric only");
-    auto t0 = clock::now();
-    lmt_state_ = internal::lmt_skeleton(pts_, edges_, all, is_hull_, options_.progress);
-    std::vector<internal::Lp_triangle> live;
-    for(const auto& t : all)
-      if(lmt_state_[t.edge[0]] && lmt_state_[t.edge[1]] && lmt_state_[t.edge[2]]) live.push_back(t);
+    auto t0 = Stage_clock::now();
+    const internal::Edge_triangles by_edge(all, edges_.size());
+    lmt_state_ = internal::lmt_skeleton(pts_, edges_, all, by_edge, is_hull_, options_.progress);
     for(char c : lmt_state_) {
       if(c == internal::lmt_certain) ++stats_.lmt_certain_edges;
       if(c == internal::lmt_possible) ++stats_.lmt_possible_edges;
     }
     stats_.time_lmt = since(t0);
     if(!options_.progress("face dynamic program", 0)) throw CGAL::MDCS::Operation_cancelled("face dynamic program");
-    t0 = clock::now();
-    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, live, lmt_state_);
-    // the faces solved by the program leave the LP; their edges shared with other faces become rows "= 1"
+    t0 = Stage_clock::now();
+    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, all, by_edge, lmt_state_);
+    // the faces solved by the program leave the LP; their edges shared with other faces become rows "= 1";
+    // the LP keeps the triangles without an impossible edge in the other faces
     std::vector<internal::Lp_triangle> out;
     for(int t : dp.dp_triangles()) {
-      fixed_.push_back(live[t].v);
-      for(int i = 0; i < 3; ++i) row_one_[live[t].edge[i]] = fixed_edge_[live[t].edge[i]] = 1;
+      fixed_.push_back(all[t].v);
+      for(int i = 0; i < 3; ++i) row_one_[all[t].edge[i]] = fixed_edge_[all[t].edge[i]] = 1;
     }
-    for(std::size_t t = 0; t < live.size(); ++t)
-      if(!dp.in_solved_face(int(t))) out.push_back(live[t]);
+    for(std::size_t t = 0; t < all.size(); ++t)
+      if(dp.is_live(int(t)) && !dp.in_solved_face(int(t))) out.push_back(all[t]);
     stats_.lmt_faces = dp.number_of_faces();
     stats_.lmt_solved_faces = dp.number_of_solved_faces();
     stats_.dp_triangles = dp.dp_triangles().size();
@@ -333,7 +352,7 @@ private:
   // Every face solved by the dynamic program: no LP; the triangulation is validated exactly.
   Mwt_result solved_by_dynamic_program(Mwt_result& r)
   {
-    const auto t0 = clock::now();
+    const auto t0 = Stage_clock::now();
     const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, fixed_) : std::string();
     if(!err.empty()) {
       r.status = Mwt_status::solver_failed;
@@ -392,6 +411,42 @@ private:
 
   // Rigorous lower bound (input units) of every triangulation over the candidate edges from any dual
   // vector y: for feasible x (0 <= x_t <= 1), c.x = b.y + d.x >= b.y + sum_t min(0, d_t), d = c - A^T y.
+  // Interval enclosure of the reduced cost of column j for the duals y (costs are sums of square roots).
+  Interval reduced_cost(std::size_t j, const std::vector<double>& y) const
+  {
+    const auto& t = triangles_[j];
+    Interval c(0);
+    if(options_.triangle_weight) {
+      const double w = user_weight(t.v[0], t.v[1], t.v[2]) / scale_;
+      c = Interval(w * (1 - 1e-12), w * (1 + 1e-12));
+    } else {
+      for(int i = 0; i < 3; ++i)
+        c += (row_one_[t.edge[i]] ? Interval(1) : Interval(0.5)) * interval_length(t.v[i], t.v[(i + 1) % 3]);
+      c /= Interval(scale_);
+    }
+    for(int k = lp_.column_start[j]; k < lp_.column_start[j + 1]; ++k)
+      c -= Interval(lp_.value[k]) * Interval(y[lp_.row_index[k]]);
+    return c;
+  }
+
+  // The exact certificate: every triangulation T of the LP region satisfies the equality rows, so
+  // w(T) = y.b + sum over T of the reduced costs, and T and the optimum T* differ in equally many triangles
+  // (all triangulations of a region have the same count). If the smallest reduced cost outside T* exceeds the
+  // largest inside it, w(T) > w(T*) for every T != T*: T* is the unique minimum, with no tolerance.
+  bool reduced_costs_separate(const std::vector<double>& y, const std::vector<double>& x) const
+  {
+    if(y.size() != lp_.number_of_rows || x.size() != triangles_.size() || options_.triangle_weight) return false;
+    for(double v : y)
+      if(!std::isfinite(v)) return false;
+    double inside_max = -HUGE_VAL, outside_min = HUGE_VAL;
+    for(std::size_t j = 0; j < triangles_.size(); ++j) {
+      const Interval d = reduced_cost(j, y);
+      if(x[j] > 0.5) inside_max = std::max(inside_max, d.sup());
+      else outside_min = std::min(outside_min, d.inf());
+    }
+    return outside_min > inside_max;
+  }
+
   double dual_lower_bound(const std::vector<double>& y) const
   {
     if(y.size() != lp_.number_of_rows) return -HUGE_VAL;
@@ -400,24 +455,11 @@ private:
       if(!std::isfinite(y[i])) return -HUGE_VAL;
       if(row_is_hull_[i]) lb += Interval(y[i]);
     }
-    const Interval S(scale_);
     for(std::size_t j = 0; j < triangles_.size(); ++j) {
-      const auto& t = triangles_[j];
-      Interval c(0);
-      if(options_.triangle_weight) {
-        const double w = user_weight(t.v[0], t.v[1], t.v[2]) / scale_;
-        c = Interval(w * (1 - 1e-12), w * (1 + 1e-12));
-      } else {
-        for(int i = 0; i < 3; ++i)
-          c += (row_one_[t.edge[i]] ? Interval(1) : Interval(0.5)) * interval_length(t.v[i], t.v[(i + 1) % 3]);
-        c /= S;
-      }
-      Interval d = c;
-      for(int k = lp_.column_start[j]; k < lp_.column_start[j + 1]; ++k)
-        d -= Interval(lp_.value[k]) * Interval(y[lp_.row_index[k]]);
+      const Interval d = reduced_cost(j, y);
       if(d.inf() < 0) lb += Interval(d.inf());
     }
-    return (lb * S).inf();
+    return (lb * Interval(scale_)).inf();
   }
 
   std::vector<Point_2> input_;

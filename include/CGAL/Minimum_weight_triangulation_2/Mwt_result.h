@@ -30,7 +30,11 @@ enum class Lp_solver_choice { automatic, clp, glpk, exact };
 
   - `certified_optimal`: the LP optimum is integral, the triangulation passed the exact validation, and a
     dual bound computed in interval arithmetic (costs are sums of square roots) proves that no
-    triangulation is lighter by more than `certificate_tolerance` (relative). With `use_lmt_skeleton`, the
+    triangulation is lighter by more than `certificate_tolerance` (relative). Where the optimum is unique
+    and the duals separate it, the certificate is exact instead (`Mwt_result::certificate_exact`): any
+    triangulation T differs from the optimum T* in as many triangles as T* differs from T, and its weight
+    exceeds that of T* by the sum of the reduced costs of T \ T* minus that of T* \ T, which is positive
+    when the smallest reduced cost outside T* exceeds the largest inside it. With `use_lmt_skeleton`, the
     faces solved by the dynamic program are optimal by the exact LMT-skeleton and an exhaustive program in
     double precision (no LP there; when every face is solved no LP is built at all).
   - `optimal_after_branch_and_bound`: the LP optimum was fractional; the binary program solved by GLPK's
@@ -65,7 +69,9 @@ struct Mwt_options
   Pruning pruning = Pruning::automatic;             ///< automatic: diamond for L2, none otherwise
   Lp_solver_choice solver = Lp_solver_choice::automatic;   ///< automatic: CLP, else GLPK
   bool resolve_fractional = true;                  ///< run branch and bound (GLPK) on a fractional LP optimum
-  double branch_and_bound_time_limit = 0;          ///< seconds, 0: none
+  /// Seconds for the branch and bound of a fractional LP optimum (0: none). When it runs out, the status is
+  /// `fractional_bound_only` with the LP bound. The progress callback can also stop it (stage "branch and bound").
+  double branch_and_bound_time_limit = 300;
   double certificate_tolerance = 1e-9;             ///< relative gap accepted by the certificate
   double integrality_tolerance = 1e-6;
   bool validate = true;                            ///< exact validation of the output triangulation
@@ -87,6 +93,8 @@ struct Mwt_statistics
   std::size_t lmt_certain_edges = 0, lmt_possible_edges = 0, lmt_faces = 0, lmt_solved_faces = 0, dp_triangles = 0,
               lmt_largest_face = 0;
   double time_lmt = 0, time_face_dp = 0;
+  /// input checks, convex hull and grid (and, in minimum_weight_triangulation_2(), the Hilbert sort of the points)
+  double time_setup = 0;
   double time_candidates = 0, time_triangles = 0, time_lp_build = 0, time_lp_solve = 0, time_certificate = 0,
          time_branch_and_bound = 0, time_total = 0;
 };
@@ -101,6 +109,11 @@ struct Mwt_result
   double lp_objective = std::numeric_limits<double>::quiet_NaN();  ///< LP optimum, in input units
   bool lp_integral = false;
   bool lp_exact = false;                         ///< the LP optimum was verified in rational arithmetic
+  /// The certificate needs no tolerance: with the solver's duals, every triangle outside the triangulation
+  /// has a reduced cost larger than that of any triangle in it, in interval arithmetic (costs are sums of
+  /// square roots), which proves it the unique minimum (see `Mwt_status`). Only on the LP path without faces
+  /// solved by the dynamic programs.
+  bool certificate_exact = false;
   std::string solver, message;
   Mwt_statistics statistics;
 

@@ -15,6 +15,8 @@
 #include <CGAL/Minimum_weight_triangulation_2/GLPK_linear_program_solver.h>
 #endif
 
+#include <chrono>
+#include <ctime>
 #include <iterator>
 #include <stdexcept>
 #include <vector>
@@ -57,12 +59,46 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
 {
   typedef typename std::iterator_traits<decltype(std::begin(points))>::value_type Point_2;
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel Kernel;
-  std::vector<Point_2> p(std::begin(points), std::end(points));
-  Minimum_weight_triangulation_lp_2<Kernel> mwt(p, options);
-  mwt.compute_candidate_edges();
-  mwt.compute_empty_triangles();
-  mwt.build_linear_program();
-  return mwt.solve(solver, binary_solver);
+  std::vector<Point_2> input(std::begin(points), std::end(points));
+  // The stages run on the points in Hilbert order (locality of the grids and of every per-point array); the
+  // triangles are mapped back to the input indices. Bad input is reported with the input indices.
+  std::vector<int> order;
+#if defined(MDCS_MWT_CPU_TIMERS)
+  const double t0 = double(std::clock()) / CLOCKS_PER_SEC;
+#else
+  const auto t0 = std::chrono::steady_clock::now();
+#endif
+  try {
+    order = internal::hilbert_order(input);
+  } catch(const std::invalid_argument&) {
+    internal::Indexed_points_2<Kernel> ip(input);
+    internal::checked_hull_boundary(ip);   // throws with the input indices
+    throw;
+  }
+  std::vector<Point_2> p(input.size());
+  for(std::size_t i = 0; i < order.size(); ++i) p[i] = input[std::size_t(order[i])];
+#if defined(MDCS_MWT_CPU_TIMERS)
+  const double sort_time = double(std::clock()) / CLOCKS_PER_SEC - t0;
+#else
+  const double sort_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+#endif
+  Mwt_result r;
+  try {
+    Minimum_weight_triangulation_lp_2<Kernel> mwt(p, options);
+    mwt.compute_candidate_edges();
+    mwt.compute_empty_triangles();
+    mwt.build_linear_program();
+    r = mwt.solve(solver, binary_solver);
+  } catch(const std::invalid_argument&) {
+    internal::Indexed_points_2<Kernel> ip(input);
+    internal::checked_hull_boundary(ip);   // input errors again, with the input indices
+    throw;
+  }
+  for(auto& t : r.triangles)
+    for(int& v : t) v = order[std::size_t(v)];
+  r.statistics.time_setup += sort_time;
+  r.statistics.time_total += sort_time;
+  return r;
 }
 
 /*!
@@ -80,7 +116,12 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   std::function<Linear_program_solution(const Sparse_linear_program&)> bb;
 #if defined(MDCS_HAS_GLPK)
   const double limit = options.branch_and_bound_time_limit;
-  bb = [limit](const Sparse_linear_program& lp) { return GLPK_linear_program_solver().solve_binary(lp, limit); };
+  const auto progress = options.progress;
+  bb = [limit, progress](const Sparse_linear_program& lp) {
+    std::function<bool(double)> keep_going;
+    if(progress) keep_going = [progress](double f) { return progress("branch and bound", f); };
+    return GLPK_linear_program_solver().solve_binary(lp, limit, keep_going);
+  };
 #endif
   Lp_solver_choice c = options.solver;
   if(c == Lp_solver_choice::automatic) {

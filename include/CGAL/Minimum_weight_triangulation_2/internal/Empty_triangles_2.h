@@ -29,59 +29,85 @@ struct Lp_triangle
   std::array<int, 3> side;   // +1: the triangle lies left of its edge (lower index -> higher index)
 };
 
+/// The candidate edges as a compressed adjacency: for every vertex its neighbours in increasing order with the
+/// index of the joining edge; find(a, b) is a binary search in the shorter of the two rows.
 class Edge_index
 {
 public:
-  explicit Edge_index(const std::vector<Edge>& edges, std::size_t n) : n_(n)
+  struct Entry { int v, edge; };
+
+  explicit Edge_index(const std::vector<Edge>& edges, std::size_t n) : start_(n + 1, 0)
   {
-    map_.reserve(edges.size() * 2);
-    for(std::size_t i = 0; i < edges.size(); ++i) map_.emplace(key(edges[i].first, edges[i].second), int(i));
+    for(const Edge& e : edges) { ++start_[std::size_t(e.first) + 1]; ++start_[std::size_t(e.second) + 1]; }
+    for(std::size_t v = 1; v <= n; ++v) start_[v] += start_[v - 1];
+    nbr_.resize(start_[n]);
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for(std::size_t i = 0; i < edges.size(); ++i) {
+      nbr_[fill[std::size_t(edges[i].first)]++] = Entry{edges[i].second, int(i)};
+      nbr_[fill[std::size_t(edges[i].second)]++] = Entry{edges[i].first, int(i)};
+    }
+    for(std::size_t v = 0; v < n; ++v)
+      std::sort(nbr_.begin() + std::ptrdiff_t(start_[v]), nbr_.begin() + std::ptrdiff_t(start_[v + 1]),
+                [](const Entry& x, const Entry& y) { return x.v < y.v; });
   }
+
+  /// Index of the edge ab, -1 if it is no candidate.
   int find(int a, int b) const
   {
-    auto it = map_.find(a < b ? key(a, b) : key(b, a));
-    return it == map_.end() ? -1 : it->second;
+    if(degree(a) > degree(b)) std::swap(a, b);
+    const Entry *lo = begin(a), *hi = end(a);
+    const Entry* it = std::lower_bound(lo, hi, b, [](const Entry& x, int v) { return x.v < v; });
+    return (it != hi && it->v == b) ? it->edge : -1;
   }
+  const Entry* begin(int v) const { return nbr_.data() + start_[std::size_t(v)]; }
+  const Entry* end(int v) const { return nbr_.data() + start_[std::size_t(v) + 1]; }
+  std::size_t degree(int v) const { return start_[std::size_t(v) + 1] - start_[std::size_t(v)]; }
+  /// Twice the number of edges.
+  std::size_t degree_sum() const { return nbr_.size(); }
 
 private:
-  std::uint64_t key(int a, int b) const { return std::uint64_t(a) * n_ + std::uint64_t(b); }
-  std::size_t n_;
-  std::unordered_map<std::uint64_t, int> map_;
+  std::vector<std::size_t> start_;
+  std::vector<Entry> nbr_;
 };
 
+/// Every empty triangle whose sides are candidate edges (exact orientations).
 template <class P, class Progress>
-std::vector<Lp_triangle> empty_triangles(const P& pts, const Point_grid_2& grid, const std::vector<Edge>& edges,
-                                         const Edge_index& index, Progress& progress)
+std::vector<Lp_triangle> empty_triangles(const P& pts, const Point_grid_2& grid, const Edge_index& index, Progress& progress)
 {
   const int n = int(pts.size());
-  std::vector<std::vector<int>> adj(n);
-  for(const Edge& e : edges) { adj[e.first].push_back(e.second); adj[e.second].push_back(e.first); }
-  for(auto& a : adj) std::sort(a.begin(), a.end());
-  std::vector<int> mark(n, -1);
+  std::vector<int> mark(std::size_t(n), -1), mark_edge(std::size_t(n), -1);
   std::vector<Lp_triangle> out;
+  out.reserve(index.degree_sum() / 2 * 27 / 10 + 16);   // about 2.6 triangles per edge on uniform points
   CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "empty triangles", std::size_t(n));
   for(int a = 0; a < n; ++a) {
     report(std::size_t(a));
-    for(int b : adj[a]) mark[b] = a;
-    for(int b : adj[a]) {
+    for(const auto* e = index.begin(a); e != index.end(a); ++e) { mark[e->v] = a; mark_edge[e->v] = e->edge; }
+    for(const auto* eb = index.begin(a); eb != index.end(a); ++eb) {
+      const int b = eb->v;
       if(b <= a) continue;
-      for(int c : adj[b]) {
+      for(const auto* ec = index.begin(b); ec != index.end(b); ++ec) {
+        const int c = ec->v;
         if(c <= b || mark[c] != a) continue;
         const int o = pts.orientation(a, b, c);
         if(o == 0) continue;
         const double x0 = std::min({pts.x(a), pts.x(b), pts.x(c)}), x1 = std::max({pts.x(a), pts.x(b), pts.x(c)});
         const double y0 = std::min({pts.y(a), pts.y(b), pts.y(c)}), y1 = std::max({pts.y(a), pts.y(b), pts.y(c)});
-        const bool occupied = grid.any_in_box(x0, y0, x1, y1, [&](int r) {
+        const bool occupied = grid.any_in_box_xy(x0, y0, x1, y1, [&](int r, double rx, double ry) {
           if(r == a || r == b || r == c) return false;
-          return pts.orientation(a, b, r) == o && pts.orientation(b, c, r) == o && pts.orientation(c, a, r) == o;
+          return pts.orientation(a, b, r, rx, ry) == o && pts.orientation(b, c, r, rx, ry) == o &&
+                 pts.orientation(c, a, r, rx, ry) == o;
         });
         if(occupied) continue;
+        // sides ab, bc, ca; counter-clockwise (a, b, c) or (a, c, b); side +1: the triangle lies left of lower -> higher
         Lp_triangle t;
-        t.v = o > 0 ? std::array<int, 3>{a, b, c} : std::array<int, 3>{a, c, b};
-        for(int i = 0; i < 3; ++i) {
-          const int u = t.v[i], w = t.v[(i + 1) % 3];
-          t.edge[i] = index.find(u, w);
-          t.side[i] = u < w ? 1 : -1;   // the triangle is left of u -> w (counter-clockwise)
+        if(o > 0) {
+          t.v = {{a, b, c}};
+          t.edge = {{eb->edge, ec->edge, mark_edge[c]}};
+          t.side = {{1, 1, -1}};
+        } else {
+          t.v = {{a, c, b}};
+          t.edge = {{mark_edge[c], ec->edge, eb->edge}};
+          t.side = {{1, -1, -1}};
         }
         out.push_back(t);
       }

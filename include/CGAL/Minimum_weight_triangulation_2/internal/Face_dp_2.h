@@ -17,7 +17,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -29,25 +28,40 @@ template <class P>
 class Face_dp_2
 {
 public:
-  /// `state`: the result of lmt_skeleton(); `tri`: the empty triangles with possible edges; `max_face`: larger
-  /// faces go to the LP (the programs take O(m^3) time, O(m^2) memory).
+  /// `state`: the result of lmt_skeleton(); `tri`: the empty triangles (those with an impossible edge are
+  /// ignored), `by_edge` their lists per edge; `max_face`: larger faces go to the LP (the programs take O(m^3)
+  /// time, O(m^2) memory).
   Face_dp_2(const P& pts, const std::vector<Edge>& edges, const Edge_index& index, const std::vector<Lp_triangle>& tri,
-            const std::vector<char>& state, std::size_t max_face = 400)
-    : pts_(pts), edges_(edges), index_(index), tri_(tri), state_(state), n_(int(pts.size())), nbr_(n_)
+            const Edge_triangles& by_edge, const std::vector<char>& state, std::size_t max_face = 400)
+    : pts_(pts), edges_(edges), index_(index), tri_(tri), state_(state), n_(int(pts.size())), by_edge_(by_edge),
+      nbr_start_(std::size_t(n_) + 1, 0)
   {
+    // certain neighbours of every vertex, counter-clockwise from angle 0 (flat arrays)
     for(std::size_t e = 0; e < edges.size(); ++e)
-      if(state[e] == lmt_certain) { nbr_[edges[e].first].push_back(edges[e].second); nbr_[edges[e].second].push_back(edges[e].first); }
-    for(int v = 0; v < n_; ++v) std::sort(nbr_[v].begin(), nbr_[v].end(), [&](int a, int b) { return ccw_less(v, a, b); });
-    tri_map_.reserve(tri.size() * 2);
-    for(std::size_t t = 0; t < tri.size(); ++t) tri_map_.emplace(tri_key(tri[t].v[0], tri[t].v[1], tri[t].v[2]), int(t));
+      if(state[e] == lmt_certain) { ++nbr_start_[std::size_t(edges[e].first) + 1]; ++nbr_start_[std::size_t(edges[e].second) + 1]; }
+    for(std::size_t v = 1; v < nbr_start_.size(); ++v) nbr_start_[v] += nbr_start_[v - 1];
+    nbr_.resize(nbr_start_.back());
+    {
+      std::vector<std::size_t> fill(nbr_start_.begin(), nbr_start_.end() - 1);
+      for(std::size_t e = 0; e < edges.size(); ++e)
+        if(state[e] == lmt_certain) {
+          nbr_[fill[std::size_t(edges[e].first)]++] = edges[e].second;
+          nbr_[fill[std::size_t(edges[e].second)]++] = edges[e].first;
+        }
+    }
+    for(int v = 0; v < n_; ++v)
+      std::sort(nbr_.begin() + std::ptrdiff_t(nbr_start_[v]), nbr_.begin() + std::ptrdiff_t(nbr_start_[v + 1]),
+                [&](int a, int b) { return ccw_less(v, a, b); });
+    half_face_.assign(nbr_.size(), -1);
     trace_faces();
     // the face of each isolated point (no certain edge), found through a triangle at it
     std::vector<int> inner_count(faces_.size(), 0), inner_point(faces_.size(), -1);
     std::vector<char> located(std::size_t(n_), 0);
     for(std::size_t t = 0; t < tri.size(); ++t)
       for(int r = 0; r < 3; ++r) {
+        if(!is_live(int(t))) break;
         const int u = tri[t].v[r];
-        if(!nbr_[u].empty() || located[u]) continue;
+        if(nbr_start_[u] != nbr_start_[u + 1] || located[u]) continue;
         const int f = face_of(int(t));
         if(f < 0) continue;
         located[u] = 1;
@@ -73,6 +87,13 @@ public:
     return s;
   }
 
+  /// Whether no edge of triangle t is impossible.
+  bool is_live(int t) const
+  {
+    return state_[tri_[t].edge[0]] != lmt_impossible && state_[tri_[t].edge[1]] != lmt_impossible &&
+           state_[tri_[t].edge[2]] != lmt_impossible;
+  }
+
   /// Whether triangle t (all of its edges possible) lies in a face solved by the dynamic program.
   bool in_solved_face(int t) const
   {
@@ -89,16 +110,15 @@ private:
   {
     for(int r = 0; r < 3; ++r) {
       const int u = tri_[t].v[r], v = tri_[t].v[(r + 1) % 3];
-      const auto& L = nbr_[u];
-      if(L.empty()) continue;
+      const std::size_t b0 = nbr_start_[u], b1 = nbr_start_[u + 1];
+      if(b0 == b1) continue;
       // the last certain neighbour x at or before direction u->v in counter-clockwise order
-      int x = L.back();
-      for(int w : L) {
-        if(w == v || ccw_less(u, w, v)) x = w;
+      std::size_t x = b1 - 1;
+      for(std::size_t k = b0; k < b1; ++k) {
+        if(nbr_[k] == v || ccw_less(u, nbr_[k], v)) x = k;
         else break;
       }
-      auto it = half_face_.find(half_key(u, x));
-      return it == half_face_.end() ? -1 : it->second;
+      return half_face_[x];
     }
     return -1;
   }
@@ -111,31 +131,31 @@ private:
     if(ha != hb) return ha < hb;
     return pts_.orientation(v, a, b) > 0;
   }
-  std::uint64_t half_key(int a, int b) const { return std::uint64_t(a) * std::uint64_t(n_) + std::uint64_t(b); }
-  std::uint64_t tri_key(int a, int b, int c) const
+  // position of the directed certain edge a -> b in the flat neighbour array
+  std::size_t half_edge(int a, int b) const
   {
-    int s[3] = {a, b, c};
-    std::sort(s, s + 3);
-    return (std::uint64_t(s[0]) * std::uint64_t(n_) + std::uint64_t(s[1])) * std::uint64_t(n_) + std::uint64_t(s[2]);
+    for(std::size_t k = nbr_start_[a]; k < nbr_start_[a + 1]; ++k)
+      if(nbr_[k] == b) return k;
+    return nbr_.size();   // not reached: b is a certain neighbour of a
   }
 
   void trace_faces()
   {
     for(int u = 0; u < n_; ++u)
-      for(int v : nbr_[u]) {
-        if(half_face_.count(half_key(u, v))) continue;
+      for(std::size_t h0 = nbr_start_[u]; h0 < nbr_start_[u + 1]; ++h0) {
+        if(half_face_[h0] >= 0) continue;
         std::vector<int> cyc;
-        int a = u, b = v;
+        int a = u;
+        std::size_t h = h0;
         const int id = int(faces_.size());
-        while(!half_face_.count(half_key(a, b))) {
-          half_face_.emplace(half_key(a, b), id);
+        while(half_face_[h] < 0) {
+          half_face_[h] = id;
           cyc.push_back(a);
           // next: at b, the certain neighbour just before a in counter-clockwise order
-          const auto& L = nbr_[b];
-          const std::size_t k = std::size_t(std::find(L.begin(), L.end(), a) - L.begin());
-          const int c = L[(k + L.size() - 1) % L.size()];
+          const int b = nbr_[h];
+          const std::size_t k = half_edge(b, a), b0 = nbr_start_[b], b1 = nbr_start_[b + 1];
+          h = k == b0 ? b1 - 1 : k - 1;
           a = b;
-          b = c;
         }
         faces_.push_back(cyc);
       }
@@ -154,11 +174,17 @@ private:
   // alive empty counter-clockwise triangle (a, b, c), or -1
   int live_triangle(int a, int b, int c) const
   {
-    auto it = tri_map_.find(tri_key(a, b, c));
-    if(it == tri_map_.end() || pts_.orientation(a, b, c) <= 0) return -1;
-    const auto& T = tri_[it->second];
-    if(state_[T.edge[0]] == lmt_impossible || state_[T.edge[1]] == lmt_impossible || state_[T.edge[2]] == lmt_impossible) return -1;
-    return it->second;
+    const int e = index_.find(a, b);
+    if(e < 0) return -1;
+    // (a, b, c) counter-clockwise lies left of a -> b: side 0 of the edge when a < b, side 1 otherwise
+    const int s = a < b ? 0 : 1;
+    for(const int* t = by_edge_.begin(e, s); t != by_edge_.end(e, s); ++t) {
+      const Lp_triangle& T = tri_[*t];
+      if(T.v[0] != c && T.v[1] != c && T.v[2] != c) continue;
+      if(state_[T.edge[0]] == lmt_impossible || state_[T.edge[1]] == lmt_impossible || state_[T.edge[2]] == lmt_impossible) return -1;
+      return *t;
+    }
+    return -1;
   }
 
   // The face F (a counter-clockwise simple cycle) without interior point (c < 0) or with the one interior
@@ -279,8 +305,9 @@ private:
   const std::vector<Lp_triangle>& tri_;
   const std::vector<char>& state_;
   int n_;
-  std::vector<std::vector<int>> nbr_;
-  std::unordered_map<std::uint64_t, int> tri_map_, half_face_;
+  const Edge_triangles& by_edge_;
+  std::vector<std::size_t> nbr_start_;
+  std::vector<int> nbr_, half_face_;
   std::vector<std::vector<int>> faces_;
   std::vector<char> solved_;
   std::vector<int> dp_tri_;

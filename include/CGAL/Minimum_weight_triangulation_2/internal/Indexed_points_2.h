@@ -9,10 +9,17 @@
 
 #include <CGAL/number_utils.h>
 #include <CGAL/enum.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Hilbert_sort_median_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -34,18 +41,45 @@ public:
       x_[i] = CGAL::to_double(p[i].x());
       y_[i] = CGAL::to_double(p[i].y());
     }
+    exact_doubles_ = std::is_same<typename K::FT, double>::value;
   }
 
   std::size_t size() const { return points_.size(); }
   double x(int i) const { return x_[i]; }
   double y(int i) const { return y_[i]; }
   const Point_2& point(int i) const { return points_[i]; }
+  /// Whether x(i), y(i) are the kernel's coordinates exactly (then static filters on them are exact).
+  bool has_exact_doubles() const { return exact_doubles_; }
 
   /// Exact sign of the orientation of (a, b, c): +1 left turn, -1 right turn, 0 collinear.
   int orientation(int a, int b, int c) const
   {
+    if(exact_doubles_) {
+      // Shewchuk's static filter (ccwerrboundA) on the double coordinates, which are the input's exactly
+      const double l = (x_[a] - x_[c]) * (y_[b] - y_[c]), r = (y_[a] - y_[c]) * (x_[b] - x_[c]);
+      // (bound > 1e-300: an underflowed product's error, below 1e-323, is then covered; inf/NaN fall through)
+      const double det = l - r, bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
+      if(bound > 1e-300) {
+        if(det > bound) return 1;
+        if(-det > bound) return -1;
+      }
+    }
     const CGAL::Orientation o = orientation_(points_[a], points_[b], points_[c]);
     return o == CGAL::LEFT_TURN ? 1 : (o == CGAL::RIGHT_TURN ? -1 : 0);
+  }
+
+  /// Same as orientation(a, b, c), with the coordinates (cx, cy) of c given (read from a grid cell).
+  int orientation(int a, int b, int c, double cx, double cy) const
+  {
+    if(exact_doubles_) {
+      const double l = (x_[a] - cx) * (y_[b] - cy), r = (y_[a] - cy) * (x_[b] - cx);
+      const double det = l - r, bound = 3.3306690738754716e-16 * (std::abs(l) + std::abs(r));
+      if(bound > 1e-300) {
+        if(det > bound) return 1;
+        if(-det > bound) return -1;
+      }
+    }
+    return orientation(a, b, c);
   }
 
   /// Exact: c lies strictly inside the segment ab (a != b).
@@ -62,7 +96,26 @@ private:
   const std::vector<Point_2>& points_;
   typename K::Orientation_2 orientation_;
   std::vector<double> x_, y_;
+  bool exact_doubles_ = false;   // the kernel's coordinates are these doubles (then a static filter is exact)
 };
+
+/// Indices of the points in Hilbert-curve order (CGAL::hilbert_sort, median policy): neighbours in the plane
+/// get close indices. Throws std::invalid_argument on a non-finite coordinate.
+template <class Point_2>
+std::vector<int> hilbert_order(const std::vector<Point_2>& p)
+{
+  typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
+  typedef CGAL::Spatial_sort_traits_adapter_2<K, typename CGAL::Pointer_property_map<Point_2>::const_type> Traits;
+  for(std::size_t i = 0; i < p.size(); ++i)
+    if(!std::isfinite(CGAL::to_double(p[i].x())) || !std::isfinite(CGAL::to_double(p[i].y())))
+      throw std::invalid_argument("minimum_weight_triangulation_2: point " + std::to_string(i) + " has a non-finite coordinate");
+  std::vector<int> order(p.size());
+  for(std::size_t i = 0; i < p.size(); ++i) order[i] = int(i);
+  if(p.empty()) return order;
+  CGAL::Hilbert_sort_median_2<Traits, CGAL::Sequential_tag> sort(Traits(CGAL::make_property_map(p)));
+  sort(order.begin(), order.end());
+  return order;
+}
 
 /// A uniform grid over the points' bounding box with about `per_cell` points per cell.
 class Point_grid_2
@@ -93,8 +146,15 @@ public:
     }
     for(std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
     items_.resize(n);
+    xs_.resize(n);
+    ys_.resize(n);
     std::vector<int> fill(start_.begin(), start_.end() - 1);
-    for(std::size_t i = 0; i < n; ++i) items_[fill[cell_of[i]]++] = int(i);
+    for(std::size_t i = 0; i < n; ++i) {
+      const int k = fill[cell_of[i]]++;
+      items_[k] = int(i);
+      xs_[k] = P.x(int(i));
+      ys_[k] = P.y(int(i));
+    }
   }
 
   int cx(double x) const { return std::max(0, std::min(nx_ - 1, int(std::floor((x - xmin_) / cell_)))); }
@@ -102,8 +162,16 @@ public:
   int nx() const { return nx_; }
   int ny() const { return ny_; }
   double cell_size() const { return cell_; }
+  double x0() const { return xmin_; }
+  double y0() const { return ymin_; }
   const int* begin(int i, int j) const { return items_.data() + start_[i + nx_ * j]; }
   const int* end(int i, int j) const { return items_.data() + start_[i + nx_ * j + 1]; }
+  /// Position of the first item of cell (i, j) (first(i + 1, j) is one past its last); the item at a position
+  /// and its coordinates.
+  int first(int i, int j) const { return start_[i + nx_ * j]; }
+  int item(int k) const { return items_[k]; }
+  double item_x(int k) const { return xs_[k]; }
+  double item_y(int k) const { return ys_[k]; }
 
   /// Calls f(point index) for the points of the cells meeting the box (slightly enlarged); stops when f returns true.
   template <class F>
@@ -118,10 +186,25 @@ public:
     return false;
   }
 
+  /// As any_in_box, calling f(point index, x, y) with the coordinates stored in the cell.
+  template <class F>
+  bool any_in_box_xy(double x0, double y0, double x1, double y1, F f) const
+  {
+    const double pad = 1e-9 * cell_;
+    const int i0 = cx(x0 - pad), i1 = cx(x1 + pad), j0 = cy(y0 - pad), j1 = cy(y1 + pad);
+    for(int j = j0; j <= j1; ++j) {
+      const int k1 = start_[i1 + nx_ * j + 1];
+      for(int k = start_[i0 + nx_ * j]; k < k1; ++k)   // the cells i0..i1 of row j are consecutive
+        if(f(items_[k], xs_[k], ys_[k])) return true;
+    }
+    return false;
+  }
+
 private:
   double xmin_, ymin_, cell_;
   int nx_, ny_;
   std::vector<int> start_, items_;
+  std::vector<double> xs_, ys_;   // coordinates of items_
 };
 
 } // namespace internal

@@ -26,10 +26,18 @@ namespace internal {
 /// State of a candidate edge after the LMT-skeleton.
 enum Lmt_edge_state : char { lmt_impossible = 0, lmt_possible = 1, lmt_certain = 2 };
 
-/// Exact: |ab| <= |cd| (Euclidean).
+/// Exact: |ab| <= |cd| (Euclidean); a static filter on the doubles when they are the kernel's coordinates.
 template <class P>
 bool not_longer(const P& pts, int a, int b, int c, int d)
 {
+  if(pts.has_exact_doubles()) {
+    const double ux = pts.x(b) - pts.x(a), uy = pts.y(b) - pts.y(a), vx = pts.x(d) - pts.x(c), vy = pts.y(d) - pts.y(c);
+    const double l = ux * ux + uy * uy, r = vx * vx + vy * vy;
+    // each side: rounded differences, squares and sum, relative error < 4.5 eps; the subtraction adds eps
+    const double bound = 8e-16 * (l + r);
+    if(bound > 1e-300 && l - r > bound) return false;
+    if(bound > 1e-300 && r - l > bound) return true;
+  }
   return CGAL::compare_distance(pts.point(a), pts.point(b), pts.point(c), pts.point(d)) != CGAL::LARGER;
 }
 
@@ -44,20 +52,40 @@ bool properly_cross(const P& pts, int a, int b, int c, int d)
   return o3 * o4 < 0;
 }
 
+/// Triangles by edge and side: for edge e and side s (0: left of lower -> higher index, 1: right), the
+/// triangles at(e, s) as a compressed array.
+class Edge_triangles
+{
+public:
+  Edge_triangles(const std::vector<Lp_triangle>& tri, std::size_t m) : start_(2 * m + 1, 0)
+  {
+    for(const auto& t : tri)
+      for(int i = 0; i < 3; ++i) ++start_[slot(t.edge[i], t.side[i]) + 1];
+    for(std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
+    item_.resize(start_.back());
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for(std::size_t t = 0; t < tri.size(); ++t)
+      for(int i = 0; i < 3; ++i) item_[fill[slot(tri[t].edge[i], tri[t].side[i])]++] = int(t);
+  }
+  const int* begin(int e, int s) const { return item_.data() + start_[2 * std::size_t(e) + std::size_t(s)]; }
+  const int* end(int e, int s) const { return item_.data() + start_[2 * std::size_t(e) + std::size_t(s) + 1]; }
+
+private:
+  static std::size_t slot(int e, int side) { return 2 * std::size_t(e) + (side > 0 ? 0 : 1); }
+  std::vector<std::size_t> start_;
+  std::vector<int> item_;
+};
+
 /*!
   Marks every edge impossible, possible or certain. `tri` are the empty triangles over `edges` (all of them,
-  before `remove_unusable_triangles`), `is_hull` flags hull edges (always certain).
+  before `remove_unusable_triangles`), `by_edge` their lists per edge and side, `is_hull` flags hull edges
+  (always certain).
 */
 template <class P, class Progress>
 std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, const std::vector<Lp_triangle>& tri,
-                               const std::vector<char>& is_hull, Progress& progress)
+                               const Edge_triangles& by_edge, const std::vector<char>& is_hull, Progress& progress)
 {
   const std::size_t m = edges.size();
-  std::vector<std::vector<int>> side_tri[2];
-  side_tri[0].resize(m);
-  side_tri[1].resize(m);
-  for(std::size_t t = 0; t < tri.size(); ++t)
-    for(int i = 0; i < 3; ++i) side_tri[tri[t].side[i] > 0 ? 0 : 1][tri[t].edge[i]].push_back(int(t));
   std::vector<char> alive(m, 1), queued(m, 1);
   auto tri_alive = [&](int t) { return alive[tri[t].edge[0]] && alive[tri[t].edge[1]] && alive[tri[t].edge[2]]; };
   auto apex = [&](int t, int e) {
@@ -66,16 +94,18 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
     return -1;
   };
   // an interior edge keeps a witness: a live triangle on each side with a non-convex quadrilateral or |ab| <= |cd|
+  // (c is strictly left and d strictly right of ab, so acbd is strictly convex iff cd crosses the line ab
+  // between a and b)
   auto has_witness = [&](int e) {
     const int a = edges[e].first, b = edges[e].second;
-    for(int t1 : side_tri[0][e]) {
-      if(!tri_alive(t1)) continue;
-      const int c = apex(t1, e);
-      for(int t2 : side_tri[1][e]) {
-        if(!tri_alive(t2)) continue;
-        const int d = apex(t2, e);
-        if(!properly_cross(pts, a, b, c, d)) return true;   // acbd not strictly convex: no flip
+    for(const int* t1 = by_edge.begin(e, 0); t1 != by_edge.end(e, 0); ++t1) {
+      if(!tri_alive(*t1)) continue;
+      const int c = apex(*t1, e);
+      for(const int* t2 = by_edge.begin(e, 1); t2 != by_edge.end(e, 1); ++t2) {
+        if(!tri_alive(*t2)) continue;
+        const int d = apex(*t2, e);
         if(not_longer(pts, a, b, c, d)) return true;
+        if(pts.orientation(c, d, a) * pts.orientation(c, d, b) >= 0) return true;   // acbd not strictly convex: no flip
       }
     }
     return false;
@@ -95,8 +125,9 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
     if(!alive[e] || has_witness(e)) continue;
     alive[e] = 0;
     for(int s = 0; s < 2; ++s)
-      for(int t : side_tri[s][e])
+      for(const int* tp = by_edge.begin(e, s); tp != by_edge.end(e, s); ++tp)
         for(int i = 0; i < 3; ++i) {
+          const int t = *tp;
           const int f = tri[t].edge[i];
           if(alive[f] && !is_hull[f] && !queued[f]) { queued[f] = 1; work.push_back(f); }
         }
@@ -114,18 +145,32 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
   const double wx = std::max(xmax - xmin, 1e-300) / G, wy = std::max(ymax - ymin, 1e-300) / G;
   auto cx = [&](double x) { return std::max(0, std::min(G - 1, int((x - xmin) / wx))); };
   auto cy = [&](double y) { return std::max(0, std::min(G - 1, int((y - ymin) / wy))); };
-  std::vector<std::vector<int>> cell(std::size_t(G) * G);
+  std::vector<int> cell_item;
+  std::vector<std::size_t> cell_fill;
   auto box = [&](int e, int& i0, int& i1, int& j0, int& j1) {
     const int a = edges[e].first, b = edges[e].second;
     i0 = cx(std::min(pts.x(a), pts.x(b))); i1 = cx(std::max(pts.x(a), pts.x(b)));
     j0 = cy(std::min(pts.y(a), pts.y(b))); j1 = cy(std::max(pts.y(a), pts.y(b)));
   };
-  for(std::size_t e = 0; e < m; ++e) {
-    if(!alive[e]) continue;
-    int i0, i1, j0, j1;
-    box(int(e), i0, i1, j0, j1);
-    for(int j = j0; j <= j1; ++j)
-      for(int i = i0; i <= i1; ++i) cell[std::size_t(i) + std::size_t(G) * j].push_back(int(e));
+  // cell lists as a compressed array (count, then fill)
+  std::vector<std::size_t> cell_start(std::size_t(G) * G + 1, 0);
+  for(int pass = 0; pass < 2; ++pass) {
+    for(std::size_t e = 0; e < m; ++e) {
+      if(!alive[e]) continue;
+      int i0, i1, j0, j1;
+      box(int(e), i0, i1, j0, j1);
+      for(int j = j0; j <= j1; ++j)
+        for(int i = i0; i <= i1; ++i) {
+          const std::size_t c = std::size_t(i) + std::size_t(G) * std::size_t(j);
+          if(pass == 0) ++cell_start[c + 1];
+          else cell_item[cell_fill[c]++] = int(e);
+        }
+    }
+    if(pass == 0) {
+      for(std::size_t c = 1; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
+      cell_item.resize(cell_start.back());
+      cell_fill.assign(cell_start.begin(), cell_start.end() - 1);
+    }
   }
   std::vector<char> crossed(m, 0);
   std::vector<int> stamp(m, -1);
@@ -133,12 +178,20 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
     if(!alive[e] || crossed[e]) continue;
     int i0, i1, j0, j1;
     box(int(e), i0, i1, j0, j1);
+    const int a = edges[e].first, b = edges[e].second;
+    const double ex0 = std::min(pts.x(a), pts.x(b)), ex1 = std::max(pts.x(a), pts.x(b));
+    const double ey0 = std::min(pts.y(a), pts.y(b)), ey1 = std::max(pts.y(a), pts.y(b));
     for(int j = j0; j <= j1 && !crossed[e]; ++j)
       for(int i = i0; i <= i1 && !crossed[e]; ++i)
-        for(int f : cell[std::size_t(i) + std::size_t(G) * j]) {
+        for(std::size_t k = cell_start[std::size_t(i) + std::size_t(G) * j]; k < cell_start[std::size_t(i) + std::size_t(G) * j + 1]; ++k) {
+          const int f = cell_item[k];
           if(f == int(e) || stamp[f] == int(e)) continue;
           stamp[f] = int(e);
-          if(properly_cross(pts, edges[e].first, edges[e].second, edges[f].first, edges[f].second)) {
+          const int c = edges[f].first, d = edges[f].second;
+          // disjoint bounding boxes: no crossing
+          if(std::max(pts.x(c), pts.x(d)) < ex0 || std::min(pts.x(c), pts.x(d)) > ex1 ||
+             std::max(pts.y(c), pts.y(d)) < ey0 || std::min(pts.y(c), pts.y(d)) > ey1) continue;
+          if(properly_cross(pts, edges[e].first, edges[e].second, c, d)) {
             crossed[e] = crossed[f] = 1;
             break;
           }
