@@ -402,6 +402,30 @@ TEST_CASE("exact geodesics: distances_only mode", "[geodesics][exact][invariants
   }
 }
 
+// distances_only releases an edge's windows as soon as the front has passed its largest value: the peak number
+// of live windows is a thin band around the front, far below the windows the full field keeps, and the vertex
+// distances do not change.
+TEST_CASE("exact geodesics: distances_only keeps only the windows near the front", "[geodesics][exact][invariants]")
+{
+  const Mesh m = make<Mesh>(MDCS_test::bumpy_sphere<Point_3>(4, 0.2, 3));
+  REQUIRE(num_vertices(m) > 2000);
+  Geodesics full(m), light(m, PG::Geodesic_memory_mode::distances_only);
+  const vertex_descriptor s = *vertices(m).begin();
+  full.add_source(s);
+  light.add_source(s);
+  const auto a = vertex_distances(full, m), b = vertex_distances(light, m);
+  const auto cmp = MDCS_test::compare_distances(a, b, 1e-14);
+  INFO(cmp);
+  CHECK(cmp.ok(1e-14));
+  const PG::Geodesic_statistics& fs = full.statistics();
+  const PG::Geodesic_statistics& ls = light.statistics();
+  INFO("full field: " << fs.peak_live_windows << " live windows at the peak, distances only: " << ls.peak_live_windows);
+  CHECK(ls.windows_created == fs.windows_created);
+  CHECK(fs.stored_windows == fs.peak_live_windows);
+  CHECK(4 * ls.peak_live_windows < fs.peak_live_windows);
+  CHECK(ls.stored_windows < ls.peak_live_windows);
+}
+
 TEST_CASE("exact geodesics: the one-shot function equals the class", "[geodesics][exact][invariants]")
 {
   for(const Named_soup& ns : curved_meshes()) {

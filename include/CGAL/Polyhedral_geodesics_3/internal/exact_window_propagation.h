@@ -10,7 +10,10 @@
 //   (the *side lobes*, rooted at P0 and P1 with offsets sigma + |S P0|, sigma + |S P1|). A lobe rooted at
 //   a saddle or boundary vertex is exactly the pseudo-source MMP needs there; a lobe rooted inside an edge
 //   covers any numerical gap between neighbouring windows.
-// - Windows come out of a binary heap by their minimal distance (lazy deletion by a stamp).
+// - Windows come out of a 4-ary heap by their minimal distance (lazy deletion by a stamp); they are stored
+//   in fixed-size blocks (Window_store.h) and freed windows are reused.
+// - Distances-only mode releases the windows of an edge as soon as the front has passed its largest value
+//   (a second heap of edges keyed by that value).
 // - The stored field (windows, vertex distances) and its queries and path tracing are in window_field.h.
 // - Pruning (Xin and Wang's filter): a window, or a new piece of one, is dropped when a known vertex
 //   distance plus a straight segment beats it on its whole extent; vertex distances are kept current
@@ -24,6 +27,7 @@
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_window.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/Quaternary_heap.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/window_field.h>
 
 #include <algorithm>
@@ -88,6 +92,10 @@ public:
     heap_.clear();
 
     edge_first_.assign(mesh_.number_of_edges, -1);
+    edge_hint_.assign(mesh_.number_of_edges, -1);
+    unpropagated_.assign(mesh_.number_of_edges, 0);
+    release_queued_.assign(mesh_.number_of_edges, 0);
+    release_heap_.clear();
     edge_closed_.assign(mesh_.number_of_edges, 0);
     since_release_ = 0;
     release_interval_ = mesh_.number_of_edges / 2 + 1024;
@@ -171,16 +179,11 @@ public:
   void run(Progress& progress)
   {
     const char* stage = "geodesic propagation";
-    // several windows per edge are typical; reserving avoids most of the copying of a growing vector
-    if(windows_.capacity() < mesh_.number_of_edges)
-      windows_.reserve(mesh_.number_of_edges);
     if(!progress(stage, 0.0))
       throw MDCS::Operation_cancelled(stage);
     std::size_t pops = 0;
     while(!heap_.empty()) {
-      std::pop_heap(heap_.begin(), heap_.end(), Heap_order());
-      const Heap_entry top = heap_.back();
-      heap_.pop_back();
+      const Heap_entry top = heap_.pop();
       if(top.window < 0) {
         const Index v = -top.window - 1;
         if(top.stamp != vertex_stamp_[std::size_t(v)] || expanded_stamp_[std::size_t(v)] == top.stamp)
@@ -208,8 +211,15 @@ public:
       if(merge_tolerance_ > FT(0))
         absorb_similar_neighbours(top.window);
       windows_[std::size_t(top.window)].processed = true;
+      const Index top_edge = windows_[std::size_t(top.window)].edge;
+      --unpropagated_[std::size_t(top_edge)];
       propagate(top.window);
       ++stats_.windows_propagated;
+      if(!keep_windows_) {
+        if(unpropagated_[std::size_t(top_edge)] == 0)
+          queue_edge_release(top_edge);
+        release_passed_edges(top.key);
+      }
       if(!keep_windows_ && ++since_release_ >= release_interval_) {
         since_release_ = 0;
         release_final_edges(top.key);
@@ -229,8 +239,7 @@ public:
           dist_[v] = unreached_;
           vertex_source_[v] = -1;
         }
-      heap_.clear();
-      heap_.shrink_to_fit();
+      heap_.release();
     } else if(has_limit_) {
       for(std::size_t v = 0; v < dist_.size(); ++v)
         if(dist_[v] > limit_) {
@@ -241,11 +250,13 @@ public:
     stats_.stopped_early = stopped_early_;
     stats_.stored_windows = live_windows_;
     if(!keep_windows_) {
-      std::vector<Window>().swap(windows_);
+      windows_.release();
       std::vector<Index>().swap(free_windows_);
       std::vector<Index>(mesh_.number_of_edges, -1).swap(edge_first_);
+      std::vector<Index>().swap(edge_hint_);
     }
-    std::vector<Heap_entry>().swap(heap_);
+    heap_.release();
+    release_heap_.release();
     if(!progress(stage, 1.0))
       throw MDCS::Operation_cancelled(stage);
   }
@@ -262,55 +273,99 @@ private:
     Index window;
     std::uint32_t stamp;
   };
-  struct Heap_order
-  {
-    bool operator()(const Heap_entry& a, const Heap_entry& b) const { return b.key < a.key; }
-  };
 
   void push(Index wi)
   {
     const Window& w = windows_[std::size_t(wi)];
-    heap_.push_back(Heap_entry{window_min_distance(w.b0, w.b1, w.sx, w.sy, w.sigma), wi, w.stamp});
-    std::push_heap(heap_.begin(), heap_.end(), Heap_order());
+    heap_.push(Heap_entry{window_min_distance(w.b0, w.b1, w.sx, w.sy, w.sigma), wi, w.stamp});
     note_memory();
   }
 
   void note_memory()
   {
-    const std::size_t bytes = windows_.capacity() * sizeof(Window) + heap_.capacity() * sizeof(Heap_entry);
+    const std::size_t bytes = windows_.capacity() * sizeof(Window) +
+                              (heap_.capacity() + release_heap_.capacity()) * sizeof(Heap_entry);
     if(bytes > stats_.peak_memory_bytes)
       stats_.peak_memory_bytes = bytes;
   }
 
-  // Distances-only mode frees the windows behind the front: an edge covered end to end by windows whose
-  // values all lie below the front will never change again (everything still to come is at least the
-  // front), so its windows are released and later candidates are rejected at once.
+  // Distances-only mode frees the windows behind the front: an edge covered end to end by propagated
+  // windows whose values all lie below the front will never change again (everything still to come is at
+  // least the front), so its windows are released and later candidates are rejected at once.
+  //
+  // The largest value on edge e if it is covered end to end by propagated windows, else -1.
+  FT final_edge_bound(std::size_t e) const
+  {
+    Index wi = edge_first_[e];
+    if(wi < 0 || edge_closed_[e])
+      return FT(-1);
+    const FT L = mesh_.he_length[std::size_t(mesh_.edge_halfedge[e])];
+    // gaps up to `tiny` do not count: insert_piece drops pieces that narrow
+    const FT tiny = relative_tolerance_ * L;
+    FT covered = FT(0), bound = FT(0);
+    for(; wi >= 0; wi = windows_[std::size_t(wi)].next) {
+      const Window& w = windows_[std::size_t(wi)];
+      if(w.b0 - covered > tiny || !w.processed)
+        return FT(-1);
+      // a window's distance is convex along the edge: its largest value is at an end
+      const FT d0 = window_distance_at(w.b0, w.sx, w.sy, w.sigma), d1 = window_distance_at(w.b1, w.sx, w.sy, w.sigma);
+      if(d0 > bound) bound = d0;
+      if(d1 > bound) bound = d1;
+      covered = w.b1;
+    }
+    return L - covered > tiny ? FT(-1) : bound;
+  }
+
+  void release_edge(std::size_t e)
+  {
+    while(edge_first_[e] >= 0)
+      kill_window(edge_first_[e]);
+    edge_closed_[e] = 1;
+  }
+
+  // Releases the edge if it is final below `front`.
+  void release_if_final(std::size_t e, const FT& front)
+  {
+    const FT bound = final_edge_bound(e);
+    if(!(bound < FT(0)) && bound < front)
+      release_edge(e);
+  }
+
+  // A full scan, the fallback of the incremental release below (edges whose last unpropagated window died
+  // instead of being propagated are not queued).
   void release_final_edges(const FT& front)
   {
-    for(std::size_t e = 0; e < edge_first_.size(); ++e) {
-      if(edge_closed_[e])
+    for(std::size_t e = 0; e < edge_first_.size(); ++e)
+      release_if_final(e, front);
+  }
+
+  // Called when edge e has no unpropagated window left: queue it to be released when the front passes
+  // its largest value. A window that arrives later has its own propagation re-queue the edge.
+  // An edge has at most one entry; when it comes out and the edge gained windows meanwhile, it is queued
+  // again with its new largest value.
+  void queue_edge_release(Index e)
+  {
+    if(release_queued_[std::size_t(e)])
+      return;
+    const FT bound = final_edge_bound(std::size_t(e));
+    if(bound < FT(0))
+      return;
+    release_queued_[std::size_t(e)] = 1;
+    release_heap_.push(Heap_entry{bound, e, 0});
+  }
+
+  void release_passed_edges(const FT& front)
+  {
+    while(!release_heap_.empty() && release_heap_.top().key < front) {
+      const Index e = release_heap_.pop().window;
+      release_queued_[std::size_t(e)] = 0;
+      const FT bound = final_edge_bound(std::size_t(e));
+      if(bound < FT(0))
         continue;
-      Index wi = edge_first_[e];
-      if(wi < 0)
-        continue;
-      const FT L = mesh_.he_length[std::size_t(mesh_.edge_halfedge[e])];
-      FT covered = FT(0);
-      bool final_edge = true;
-      for(; wi >= 0; wi = windows_[std::size_t(wi)].next) {
-        const Window& w = windows_[std::size_t(wi)];
-        if(w.b0 > covered || !w.processed ||
-           !(window_distance_at(w.b0, w.sx, w.sy, w.sigma) < front) ||
-           !(window_distance_at(w.b1, w.sx, w.sy, w.sigma) < front)) {
-          final_edge = false;
-          break;
-        }
-        covered = w.b1;
-      }
-      if(!final_edge || covered < L)
-        continue;
-      while(edge_first_[e] >= 0)
-        kill_window(edge_first_[e]);
-      edge_closed_[e] = 1;
+      if(bound < front)
+        release_edge(std::size_t(e));
+      else
+        queue_edge_release(e);
     }
   }
 
@@ -342,8 +397,7 @@ private:
       if(vertex_is_pseudo_source_[std::size_t(v)]) {
         // A shortest path may bend here: once this distance is final, the vertex emits its own windows.
         const std::uint32_t stamp = ++vertex_stamp_[std::size_t(v)];
-        heap_.push_back(Heap_entry{d, -v - 1, stamp});
-        std::push_heap(heap_.begin(), heap_.end(), Heap_order());
+        heap_.push(Heap_entry{d, -v - 1, stamp});
       }
     }
   }
@@ -398,9 +452,11 @@ private:
       free_windows_.pop_back();
       return i;
     }
-    windows_.push_back(Window());
-    windows_.back().stamp = 0;
-    return Index(windows_.size() - 1);
+    const std::size_t i = windows_.emplace_back();
+    windows_[i].stamp = 0;
+    windows_[i].alive = false;
+    windows_[i].processed = false;
+    return Index(i);
   }
 
   void kill_window(Index wi)
@@ -409,6 +465,10 @@ private:
     if(w.prev >= 0) windows_[std::size_t(w.prev)].next = w.next;
     else edge_first_[std::size_t(w.edge)] = w.next;
     if(w.next >= 0) windows_[std::size_t(w.next)].prev = w.prev;
+    if(!w.processed)
+      --unpropagated_[std::size_t(w.edge)];
+    if(edge_hint_[std::size_t(w.edge)] == wi)
+      edge_hint_[std::size_t(w.edge)] = w.prev >= 0 ? w.prev : w.next;
     w.alive = false;
     ++w.stamp;
     --live_windows_;
@@ -421,8 +481,18 @@ private:
   {
     const Index wi = allocate_window();
     Window& w = windows_[std::size_t(wi)];
-    const std::uint32_t stamp = w.stamp + 1;
-    w = Window{b0, b1, sx, sy, sigma, edge, -1, -1, into, source, stamp, processed || into < 0, true};
+    w.b0 = b0;
+    w.b1 = b1;
+    w.next = w.prev = -1;
+    w.sx = sx;
+    w.sy = sy;
+    w.sigma = sigma;
+    w.edge = edge;
+    w.into_halfedge = into;
+    w.source = source;
+    ++w.stamp;
+    w.processed = processed || into < 0;
+    w.alive = true;
     if(after < 0) {
       w.next = edge_first_[std::size_t(edge)];
       edge_first_[std::size_t(edge)] = wi;
@@ -433,6 +503,9 @@ private:
     }
     if(w.next >= 0)
       windows_[std::size_t(w.next)].prev = wi;
+    edge_hint_[std::size_t(edge)] = wi;
+    if(!w.processed)
+      ++unpropagated_[std::size_t(edge)];
     ++stats_.windows_created;
     if(!w.processed)
       push(wi);
@@ -532,8 +605,27 @@ private:
     survive_.clear();
     changes_.clear();
     FT cursor = t0;
-    Index last_before = -1; // the last window that starts before t0 (insertion point)
-    for(Index vi = edge_first_[std::size_t(e)]; vi >= 0; vi = windows_[std::size_t(vi)].next) {
+    // The sweep starts at the first window ending after t0, found from the edge's last touched window
+    // (insertions on an edge tend to be close to each other) instead of from the edge's first window.
+    Index last_before = -1; // the last window that ends at or before t0 (insertion point)
+    Index start = edge_first_[std::size_t(e)];
+    Index hint = edge_hint_[std::size_t(e)];
+    if(hint >= 0) {
+      if(windows_[std::size_t(hint)].b1 > t0) {
+        for(Index p = windows_[std::size_t(hint)].prev; p >= 0 && windows_[std::size_t(p)].b1 > t0;
+            p = windows_[std::size_t(p)].prev)
+          hint = p;
+        start = hint;
+        last_before = windows_[std::size_t(hint)].prev;
+      } else {
+        for(Index n = windows_[std::size_t(hint)].next; n >= 0 && !(windows_[std::size_t(n)].b1 > t0);
+            n = windows_[std::size_t(n)].next)
+          hint = n;
+        last_before = hint;
+        start = windows_[std::size_t(hint)].next;
+      }
+    }
+    for(Index vi = start; vi >= 0; vi = windows_[std::size_t(vi)].next) {
       const Window& v = windows_[std::size_t(vi)];
       if(!(v.b1 > t0)) {
         last_before = vi;
@@ -948,7 +1040,11 @@ private:
 
 
   std::vector<Index> free_windows_;
-  std::vector<Heap_entry> heap_;
+  Quaternary_heap<Heap_entry> heap_;
+  std::vector<Index> edge_hint_; // a window of the edge (the last one created), -1 if none
+  std::vector<Index> unpropagated_; // per edge, the number of its windows not propagated yet
+  Quaternary_heap<Heap_entry> release_heap_; // edges to release (distances only), by their largest value
+  std::vector<char> release_queued_;         // per edge: has an entry in release_heap_
   std::vector<char> edge_closed_;
   std::size_t since_release_ = 0, release_interval_ = 1024;
   std::vector<char> vertex_is_pseudo_source_;

@@ -23,21 +23,23 @@ namespace CGAL {
 namespace Polyhedral_geodesics_3 {
 namespace internal {
 
+// The fields read by the sweep along an edge (b0, b1, next) come first; with FT = double a window fills
+// exactly one 64-byte cache line.
 template <class FT>
-struct Geodesic_window
+struct alignas(64) Geodesic_window
 {
   typedef std::int32_t Index;
 
   FT b0, b1;     // the interval [b0, b1] on the edge, 0 <= b0 <= b1 <= L
+  Index next, prev;       // neighbours on the edge, sorted by b0; -1 at the ends
   FT sx, sy;     // the pseudo-source in the edge frame
   FT sigma;      // the distance from the source to the pseudo-source
   Index edge;
-  Index next, prev;       // neighbours on the edge, sorted by b0; -1 at the ends
   Index into_halfedge;    // the halfedge whose face the window propagates into, -1 if none
   Index source;           // index of the source the window's paths start from
-  std::uint32_t stamp;    // incremented whenever the window changes or dies (lazy deletion in the queue)
-  bool processed;         // already propagated
-  bool alive;
+  std::uint32_t stamp : 30; // incremented whenever the window changes or dies (lazy deletion in the queue)
+  std::uint32_t processed : 1; // already propagated
+  std::uint32_t alive : 1;
 };
 
 // A window seen from a given halfedge's frame (a value type, no links).

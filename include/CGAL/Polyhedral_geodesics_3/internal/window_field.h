@@ -12,6 +12,7 @@
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_window.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/Window_store.h>
 
 #include <algorithm>
 #include <array>
@@ -451,7 +452,7 @@ protected:
   // ------------------------------------------------------------------------------------------------
   // State shared with the propagation
   const Mesh& mesh_;
-  std::vector<Window> windows_;
+  Window_store<Window> windows_;
   std::vector<Index> edge_first_;
   std::vector<FT> dist_;
   std::vector<Index> vertex_source_;
