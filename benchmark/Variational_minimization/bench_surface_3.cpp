@@ -29,6 +29,7 @@
 #include "mdcs_bench.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -89,7 +90,10 @@ void part_table22(bool quick, bool large, double budget, const std::string& pref
   std::printf("\n== 1. Cost vs size (thesis Table 2.2). Problem: area, boundary f = 0.5 + (x-0.5)(y-0.5) on the unit "
               "square, 4 boundary segments per side;\n   planes: isotropic random through uniform points of the box, "
               "10%% pencils through the boundary segments (at least one each); seed 1.\n"
-              "   peak MiB: growth of the process's peak resident set during the row (build, weights, three cuts).\n\n");
+              "   peak MiB: growth of the process's peak resident set during the whole run of the row: build, then the default\n"
+              "   solve minimize_surface_functional_3(arrangement, problem, G) (weights computed into pseudoflow run on the\n"
+              "   arrangement); weights_s and cut_pf_s split that solve. Push-relabel and BK (<= 1.5M cells) run afterwards\n"
+              "   on a weight vector, outside the peak.\n\n");
   VM::Surface_problem_3 P;
   P.boundary_segments_per_side = 4;
   P.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
@@ -112,16 +116,36 @@ void part_table22(bool quick, bool large, double budget, const std::string& pref
     const double c0 = cpu_seconds();
     std::unique_ptr<VM::Plane_arrangement_3> A(new VM::Plane_arrangement_3(planes));
     const double tb = mdcs_bench::now_seconds() - t0, cb = cpu_seconds() - c0;
+    // The whole run: build, then the default solve (pseudoflow run on the arrangement, weights computed into it).
+    // The "weights" stage of its progress report splits its time into weights and cut.
+    double weights_end = 0, weights_end_cpu = 0;
+    auto stages = [&](const char* stage, double) {
+      if(weights_end == 0 && std::string(stage) == "max-flow") {
+        weights_end = mdcs_bench::now_seconds();
+        weights_end_cpu = cpu_seconds();
+      }
+      return true;
+    };
     t0 = mdcs_bench::now_seconds();
-    const std::vector<double> w = VM::surface_facet_weights_3(*A, P, VM::Area_functional_3());
-    const double tw = mdcs_bench::now_seconds() - t0;
-    double v_pf = 0, v_pr = 0, v_bk = 0, cpf = 0, cpr = 0, cbk = 0;
-    const double tpf = time_cut<CGAL::Min_cut::Pseudoflow_max_flow>(*A, w, P, v_pf, cpf);
-    const bool small = A->number_of_cells() <= 1500000;
-    const double tpr = small ? time_cut<CGAL::Min_cut::Push_relabel_max_flow>(*A, w, P, v_pr, cpr) : NAN;
-    const double tbk = small ? time_cut<CGAL::Min_cut::Boykov_kolmogorov_max_flow>(*A, w, P, v_bk, cbk) : NAN;
-    const bool agree = !small || (std::abs(v_pf - v_pr) <= 1e-9 * v_pf && std::abs(v_pf - v_bk) <= 1e-9 * v_pf);
+    const VM::Minimal_surface_3 lean = VM::minimize_surface_functional_3(
+      *A, P, VM::Area_functional_3(), 1, CGAL::Min_cut::Pseudoflow_max_flow(), stages);
+    const double tw = weights_end - t0, tpf = mdcs_bench::now_seconds() - weights_end;
+    const double cpf = cpu_seconds() - weights_end_cpu;
+    const double v_pf = lean.solver_value;
     const double peak = mdcs_bench::peak_rss_mib() - rss0;
+    // The other engines (and pseudoflow again, through the generic Flow_network path) on a weight vector.
+    double v_pr = 0, v_bk = 0, v_pf2 = 0, cpr = 0, cbk = 0, cpf2 = 0;
+    const bool small = A->number_of_cells() <= 1500000;
+    bool agree = true;
+    double tpr = NAN, tbk = NAN;
+    if(small) {
+      const std::vector<double> w = VM::surface_facet_weights_3(*A, P, VM::Area_functional_3());
+      time_cut<CGAL::Min_cut::Pseudoflow_max_flow>(*A, w, P, v_pf2, cpf2);
+      tpr = time_cut<CGAL::Min_cut::Push_relabel_max_flow>(*A, w, P, v_pr, cpr);
+      tbk = time_cut<CGAL::Min_cut::Boykov_kolmogorov_max_flow>(*A, w, P, v_bk, cbk);
+      agree = std::abs(v_pf - v_pr) <= 1e-9 * v_pf && std::abs(v_pf - v_bk) <= 1e-9 * v_pf &&
+              std::abs(v_pf - v_pf2) <= 1e-9 * v_pf;
+    }
     const double mib = double(A->memory_bytes()) / 1048576.0;
     table.add_row({"isotropic", std::to_string(n), std::to_string(A->number_of_cells()),
                    std::to_string(A->number_of_facets()), std::to_string(A->number_of_vertices()), fmt(tb), fmt(cb),
@@ -154,14 +178,16 @@ void part_scherk(bool quick, const std::string& prefix)
   const double a = 1.2, exact = VM::scherk_surface_area(a);
   std::printf("\n== 2. Scherk's surface f = ln(cos y / cos x) on [-1.2, 1.2]^2, exact area %.10f (Gauss quadrature).\n"
               "   planes: slope-limited |slope| <= 3, 20%% pencils, 4 boundary segments per side; relaxation: L-BFGS on "
-              "20^2, 40^2, 80^2 grids. Two seeds per size.\n\n", exact);
+              "20^2, 40^2, 80^2 grids. Three seeds per size.\n\n", exact);
   const VM::Surface_problem_3 P = VM::scherk_surface_problem_3(4);
   mdcs_bench::Table table({"planes", "seed", "cells", "raw_energy", "raw_rel_error", "relaxed_energy",
                            "relaxed_rel_error", "solve_s", "relax_s"});
-  std::vector<long> sizes = {40, 80, 120, 160, 200, 240};
+  std::vector<long> sizes = {40, 80, 120, 160, 200, 240, 260};
   if(quick) sizes = {40, 80};
-  for(long n : sizes)
-    for(std::uint64_t seed : {1u, 2u}) {
+  std::vector<std::string> medians;
+  for(long n : sizes) {
+    std::vector<double> raw_errors, cell_counts;
+    for(std::uint64_t seed : {1u, 2u, 3u}) {
       VM::Surface_plane_options_3 o;
       o.distribution = VM::Plane_distribution_3::slope_limited;
       o.max_slope = 3;
@@ -178,9 +204,40 @@ void part_scherk(bool quick, const std::string& prefix)
       table.add_row({std::to_string(n), std::to_string(seed), std::to_string(A.number_of_cells()),
                      fmt(s.energy, "%.10g"), fmt((s.energy - exact) / exact, "%.3e"), fmt(r.energy, "%.10g"),
                      fmt((r.energy - exact) / exact, "%.3e"), fmt(ts), fmt(tr)});
+      raw_errors.push_back((s.energy - exact) / exact);
+      cell_counts.push_back(double(A.number_of_cells()));
     }
+    medians.push_back(std::to_string(n) + " planes: median cells " + fmt(mdcs_bench::median(cell_counts), "%.0f") +
+                      ", median raw error " + fmt(mdcs_bench::median(raw_errors), "%.3e"));
+  }
   table.print();
   table.write_csv(prefix + "_scherk.csv");
+  std::printf("\nmedians over the seeds:\n");
+  for(const std::string& m : medians) std::printf("  %s\n", m.c_str());
+  // What the raw energy converges to: the discrete problem spans the piecewise linear boundary curve (the
+  // boundary samples), not Scherk's. Its minimal area, by relaxation on fine grids with that curve as boundary:
+  for(int segments : {4, 8, 16}) {
+    VM::Surface_problem_3 Q = VM::scherk_surface_problem_3(segments);
+    const double h = 2 * a / segments;
+    auto interpolate = [=](double t, double fixed, bool x_side) {
+      const int k = std::min(segments - 1, int(std::floor((t + a) / h)));
+      const double t0 = -a + k * h, u = (t - t0) / h;
+      const double g0 = x_side ? VM::scherk_surface_height(fixed, t0) : VM::scherk_surface_height(t0, fixed);
+      const double g1 = x_side ? VM::scherk_surface_height(fixed, t0 + h) : VM::scherk_surface_height(t0 + h, fixed);
+      return (1 - u) * g0 + u * g1;
+    };
+    Q.lower_boundary = [=](double x, double y) {
+      if(std::abs(std::abs(x) - a) < 1e-12) return interpolate(y, x, true);
+      if(std::abs(std::abs(y) - a) < 1e-12) return interpolate(x, y, false);
+      return VM::scherk_surface_height(x, y);
+    };
+    VM::Surface_relaxation_options_3 ro;
+    ro.grids = {20, 40, 80, 160};
+    const double e = VM::relax_surface_3(Q, VM::Area_functional_3(), [](double x, double y) {
+                       return VM::scherk_surface_height(x, y); }, ro).energy;
+    std::printf("  limit of the raw energy with %2d boundary segments per side (area spanning the piecewise linear "
+                "boundary, 160^2 grid): %.8f, error %.3e\n", segments, e, (e - exact) / exact);
+  }
 }
 
 void part_blobs(bool quick, const std::string& prefix)
@@ -222,7 +279,11 @@ void part_blobs(bool quick, const std::string& prefix)
   table.add_row({"local descent (random start)", std::to_string(starts) + " runs", "-", "-", "-",
                  fmt(best_local, "%.8g") + " (best)", fmt(t_local / starts) + " per run", "-"});
   std::vector<double> global, selection;
-  const long n_global = quick ? 100 : 200, n_select = quick ? 80 : 120;
+  // Plane selection with its default options (every dropped plane redrawn through the whole box), 160 planes and
+  // 6 rounds. Whether a run reaches the best basin is a matter of luck at these sizes: 120 x 5 reached it in 2 of
+  // 4 runs, 120 x 10 in 3 of 4, 160 x 6 in 1 of 4 (doc/Variational_minimization/minimal_surfaces_3.md).
+  const long n_global = quick ? 100 : 200, n_select = quick ? 80 : 160;
+  const int selection_rounds = quick ? 4 : 6;
   const int runs = quick ? 2 : 4;
   for(int r = 0; r < runs; ++r) {
     VM::Surface_plane_options_3 o;
@@ -247,10 +308,10 @@ void part_blobs(bool quick, const std::string& prefix)
     mdcs_bench::reset_peak_rss();
     rss0 = mdcs_bench::current_rss_mib();
     t0 = mdcs_bench::now_seconds();
-    const VM::Plane_selection_result_3 sel = VM::select_planes_3(P, G, std::size_t(n_select), 5, o);
+    const VM::Plane_selection_result_3 sel = VM::select_planes_3(P, G, std::size_t(n_select), selection_rounds, o);
     const double e = VM::relax_surface_3(P, G, sel.surface, ro).energy;
     selection.push_back(e);
-    table.add_row({"plane selection x5", std::to_string(r), std::to_string(n_select), std::to_string(sel.cells.back()),
+    table.add_row({"plane selection x" + std::to_string(selection_rounds), std::to_string(r), std::to_string(n_select), std::to_string(sel.cells.back()),
                    fmt(sel.surface.energy, "%.8g"), fmt(e, "%.8g"), fmt(mdcs_bench::now_seconds() - t0),
                    fmt(mdcs_bench::peak_rss_mib() - rss0)});
   }
@@ -270,6 +331,27 @@ void part_blobs(bool quick, const std::string& prefix)
   std::sort(local.begin(), local.end());
   std::printf("local descent energies: min %.6g, median %.6g, max %.6g\n", local.front(), local[local.size() / 2],
               local.back());
+  // The energy histogram (thesis Table 2.3 as counts per energy bin), relaxed energies of every method.
+  const double lo = best, hi = std::max({local.back(), *std::max_element(global.begin(), global.end()),
+                                         *std::max_element(selection.begin(), selection.end())});
+  const int bins = 12;
+  const double width = (hi - lo) / bins > 0 ? (hi - lo) / bins : 1e-9;
+  std::vector<std::array<int, 3>> counts(bins, std::array<int, 3>{{0, 0, 0}});
+  auto bin_of = [&](double e) { return std::min(bins - 1, std::max(0, int((e - lo) / width))); };
+  for(double e : local) ++counts[bin_of(e)][0];
+  for(double e : global) ++counts[bin_of(e)][1];
+  for(double e : selection) ++counts[bin_of(e)][2];
+  mdcs_bench::Table histogram({"energy_from", "energy_to", "local_descent", "global_one_solve", "plane_selection"});
+  std::printf("\nenergy histogram (relaxed energies; the first bin starts at the best energy):\n");
+  for(int b = 0; b < bins; ++b) {
+    const double e0 = lo + b * width, e1 = lo + (b + 1) * width;
+    histogram.add_row({fmt(e0, "%.5f"), fmt(e1, "%.5f"), std::to_string(counts[b][0]), std::to_string(counts[b][1]),
+                       std::to_string(counts[b][2])});
+    std::printf("  [%.5f, %.5f) local %-40s global %-4s selection %s\n", e0, e1,
+                std::string(std::size_t(counts[b][0]), '#').c_str(), std::string(std::size_t(counts[b][1]), '#').c_str(),
+                std::string(std::size_t(counts[b][2]), '#').c_str());
+  }
+  histogram.write_csv(prefix + "_blobs_histogram.csv");
 }
 
 } // namespace

@@ -7,8 +7,11 @@
 #define CGAL_MIN_CUT_PSEUDOFLOW_MAX_FLOW_H
 
 #include <CGAL/Min_cut/Flow_network.h>
+#include <CGAL/Min_cut/internal/Pseudoflow_csr_graph.h>
 #include <CGAL/Min_cut/internal/pseudoflow_solver.h>
 
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -53,12 +56,14 @@ namespace Min_cut {
   measured it faster than push-relabel on most families, closure-type ones among them.
 
   **Memory.** 16 bytes per arc (32-bit head and reverse indices and a residual capacity, with
-  `double`), two arcs per facet with a nonzero capacity, and 65 bytes per node (8 more while the
-  arcs are sorted). Measured peak of a whole `solve_min_cut()` call on the arrangement duals
+  `double`), two arcs per facet with a nonzero capacity, and 48 bytes per node (8 more while the
+  arcs are sorted). The solver itself (internal::Pseudoflow_solver) runs on any residual graph with a
+  small interface; the surface code of Variational_minimization uses that to run it straight on a
+  plane arrangement (8 bytes per facet, no copy of the arcs). Measured peak of a whole `solve_min_cut()` call on the arrangement duals
   (about four arcs per cell): 35.5 bytes per arc, against 60.5 for `Push_relabel_max_flow` and
   36 for `Boykov_kolmogorov_max_flow`.
 
-  At most 2^32 - 3 nodes and 2^32 - 2 arcs (32-bit indices); beyond that it throws
+  At most 2^32 - 4 nodes and 2^32 - 2 arcs (32-bit indices); beyond that it throws
   `std::invalid_argument`.
 */
 class Pseudoflow_max_flow
@@ -67,8 +72,23 @@ public:
   template <class Capacity>
   Capacity operator()(const Max_flow_problem<Capacity>& problem, std::vector<char>& on_source_side) const
   {
-    internal::Pseudoflow_solver<Capacity> solver(problem);
-    return solver.run(on_source_side);
+    {
+      internal::Pseudoflow_csr_graph<Capacity> graph(problem);
+      internal::Pseudoflow_solver<Capacity> solver(graph);
+      solver.run(on_source_side);
+    }
+    // The max-flow value: the capacity of the minimum cut, in the problem's own capacities.
+    Capacity value = 0;
+    const std::size_t n = problem.number_of_nodes();
+    for(std::size_t x = 0; x < n; ++x)
+      value += on_source_side[x] ? problem.sink_capacity(std::uint32_t(x)) : problem.source_capacity(std::uint32_t(x));
+    const std::size_t m = problem.number_of_arc_pairs();
+    for(std::size_t k = 0; k < m; ++k) {
+      const auto p = problem.arc_pair(k);
+      if(on_source_side[p.u] && !on_source_side[p.v]) value += p.c_uv;
+      else if(!on_source_side[p.u] && on_source_side[p.v]) value += p.c_vu;
+    }
+    return value;
   }
 };
 

@@ -7,6 +7,7 @@
 #define CGAL_VARIATIONAL_MINIMIZATION_PLANE_ARRANGEMENT_3_H
 
 #include <CGAL/MDCS/progress.h>
+#include <CGAL/Variational_minimization/internal/Growable_array_3.h>
 #include <CGAL/Variational_minimization/internal/plane_arrangement_predicates_3.h>
 #include <CGAL/Variational_minimization/internal/pooled_index_lists_3.h>
 
@@ -47,8 +48,8 @@ template <class Arrangement> class Plane_arrangement_builder_3;
   degeneracy (many planes through one line or point, planes through box edges and corners, duplicate planes).
   Only `point()` is an approximation.
 
-  **Storage.** A facet keeps its plane, its two cells and its polygon as (vertex, plane of the edge to the next
-  vertex) pairs; a cell keeps its facet list; a vertex keeps its three planes and its approximate point. The
+  **Storage.** A facet keeps its plane, its two cells and its polygon as a list of vertices (the plane of an edge,
+  needed when a plane splits it, is recovered from the planes of its two vertices); a cell keeps its facet list; a vertex keeps its three planes and its approximate point. The
   polygons and the facet lists are pooled: during construction they live in large chunks with free lists (no
   allocation per list), afterwards they are packed in compressed-row form (one 32-bit offset per list into one
   array). The scratch data of the construction is released at its end (and rebuilt by a later `insert_plane()`).
@@ -122,15 +123,17 @@ public:
   /// The polygon of facet `f`: its vertices in cyclic order.
   std::vector<Vertex_index> facet_vertices(Facet_index f) const
   {
-    const std::uint32_t* p = polygons_.begin(f);
-    std::vector<Vertex_index> out(polygons_.size(f) / 2);
-    for(std::size_t i = 0; i < out.size(); ++i) out[i] = p[2 * i];
-    return out;
+    return std::vector<Vertex_index>(polygons_.begin(f), polygons_.end(f));
   }
-  std::size_t facet_degree(Facet_index f) const { return polygons_.size(f) / 2; }
-  Vertex_index facet_vertex(Facet_index f, std::size_t k) const { return polygons_.at(f, 2 * k); }
-  /// The plane of the edge from `facet_vertex(f, k)` to the next vertex.
-  Plane_index facet_edge_plane(Facet_index f, std::size_t k) const { return polygons_.at(f, 2 * k + 1); }
+  std::size_t facet_degree(Facet_index f) const { return polygons_.size(f); }
+  Vertex_index facet_vertex(Facet_index f, std::size_t k) const { return polygons_.at(f, k); }
+  /// A plane other than the facet's own that contains the edge from `facet_vertex(f, k)` to the next vertex
+  /// (the polygons store no edge planes: it is found from the two vertices' planes, exactly).
+  Plane_index facet_edge_plane(Facet_index f, std::size_t k) const
+  {
+    const std::size_t n = facet_degree(f);
+    return common_plane(facet_vertex(f, k), facet_vertex(f, (k + 1) % n), facets_[f].plane);
+  }
 
   /// The facets of cell `c`.
   Index_range cell_facets(Cell_index c) const { return Index_range{cell_facets_.begin(c), cell_facets_.end(c)}; }
@@ -161,25 +164,32 @@ public:
 private:
   template <class Arrangement> friend class internal::Plane_arrangement_builder_3;
 
+  // A plane other than `exclude` through the two distinct vertices u and v: usually one of the planes that
+  // define both; otherwise (degenerate vertices on more than three planes) found by exact side tests.
+  Plane_index common_plane(Vertex_index u, Vertex_index v, Plane_index exclude) const;
+
+  // A node's box in whole lattice units, rounded outwards (20 bytes per node instead of 32 with floats); a
+  // stored upper bound of 65535 stands for L = 65536.
   struct Tree_node
   {
-    float lo[3], hi[3];
+    std::uint16_t lo[3], hi[3];
     std::uint32_t child[2];   // child[0] == null_index: a leaf, child[1] is its cell
   };
 
   std::vector<Lattice_plane_3> planes_;
   std::vector<unsigned char> used_;
-  std::vector<Facet> facets_;
-  internal::Pooled_index_lists_3 polygons_{2};    // per facet: v0, e0, v1, e1, ...
+  // The large arrays grow by realloc() (internal::Growable_array_3): no copy, hence no extra peak, when they grow.
+  internal::Growable_array_3<Facet> facets_;
+  internal::Pooled_index_lists_3 polygons_{1};    // per facet: its vertices in cyclic order
   internal::Pooled_index_lists_3 cell_facets_{4}; // per cell: its facets
-  std::vector<std::array<Plane_index, 3>> vertex_planes_;
-  std::vector<std::array<double, 3>> points_;
-  std::vector<Tree_node> nodes_;
-  std::vector<std::uint32_t> node_of_cell_;
+  internal::Growable_array_3<std::array<Plane_index, 3>> vertex_planes_;
+  internal::Growable_array_3<std::array<double, 3>> points_;
+  internal::Growable_array_3<Tree_node> nodes_;
+  internal::Growable_array_3<std::uint32_t> node_of_cell_;
   // Construction scratch: the side of each vertex with respect to the plane being inserted (valid when its
   // epoch is the current one); released after the construction, regrown by insert_plane().
-  std::vector<std::uint32_t> side_epoch_;
-  std::vector<signed char> side_cache_;
+  internal::Growable_array_3<std::uint32_t> side_epoch_;
+  internal::Growable_array_3<signed char> side_cache_;
   std::uint32_t epoch_ = 0;
   std::set<std::array<std::int64_t, 4>> plane_keys_;
 };

@@ -123,6 +123,23 @@ inline std::vector<std::array<double, 2>> surface_facet_projection_3(const Plane
 
 /*!
   \ingroup PkgVariationalMinimizationSurfaces
+  \brief The weight of facet `f` of `arrangement` for the functional `G` (see `surface_facet_weights_3()`).
+*/
+template <class Functional>
+double surface_facet_weight_3(const Plane_arrangement_3& arrangement, const Surface_problem_3& problem,
+                              const Functional& G, Plane_arrangement_3::Facet_index f, int quadrature_level = 1)
+{
+  const Plane_arrangement_3::Plane_index p = arrangement.facet(f).plane;
+  if(p < 4) return 0; // side walls
+  const Lattice_plane_3& plane = arrangement.plane(p);
+  if(plane.c == 0) return std::numeric_limits<double>::infinity();
+  const std::array<double, 3> abc = problem.world_plane(plane);
+  return surface_polygon_integral_3(G, abc[0], abc[1], abc[2], surface_facet_projection_3(arrangement, problem, f),
+                                    quadrature_level);
+}
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
   \brief The weight of every facet of `arrangement` for the functional `G` (a model of `SurfaceFunctional_3`).
   Vertical facets inside the box weigh +infinity (they cannot belong to a function), facets on the side walls 0
   (they never enter the cut), facets on the floor and the ceiling the integral over them (a function may run
@@ -142,17 +159,7 @@ std::vector<double> surface_facet_weights_3(const Plane_arrangement_3& arrangeme
   CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "weights", n);
   for(std::size_t i = 0; i < n; ++i) {
     reporter(i);
-    const Plane_arrangement_3::Facet_index f = Plane_arrangement_3::Facet_index(i);
-    const Plane_arrangement_3::Plane_index p = arrangement.facet(f).plane;
-    if(p < 4) continue; // side walls
-    const Lattice_plane_3& plane = arrangement.plane(p);
-    if(plane.c == 0) {
-      w[i] = std::numeric_limits<double>::infinity();
-      continue;
-    }
-    const std::array<double, 3> abc = problem.world_plane(plane);
-    w[i] = surface_polygon_integral_3(G, abc[0], abc[1], abc[2], surface_facet_projection_3(arrangement, problem, f),
-                                      quadrature_level);
+    w[i] = surface_facet_weight_3(arrangement, problem, G, Plane_arrangement_3::Facet_index(i), quadrature_level);
   }
   reporter.finish();
   return w;

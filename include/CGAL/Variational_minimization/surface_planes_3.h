@@ -40,6 +40,13 @@ struct Surface_plane_options_3
   double max_slope = 2;          ///< slope_limited only: bound on |A| and |B| in world units
   double pencil_fraction = 0.1;  ///< share of the planes forced through the boundary segments (at least one each)
   std::uint64_t seed = 1;
+  /// `select_planes_3()` only: the share of the redrawn planes that pass through random points near the current
+  /// optimum (the others are drawn from `distribution` through the whole box); 0 (the default, the thesis's
+  /// scheme) redraws them all uniformly.
+  double selection_near_fraction = 0;
+  /// `select_planes_3()` only: the spread of those points' heights about the optimum (standard deviation, as a
+  /// share of zmax - zmin).
+  double selection_near_spread = 0.1;
 };
 
 namespace internal {

@@ -11,6 +11,7 @@
 #define CGAL_MIN_CUT_INTERNAL_PSEUDOFLOW_SOLVER_H
 
 #include <CGAL/Min_cut/Flow_network.h>
+#include <CGAL/Min_cut/internal/Pseudoflow_csr_graph.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -61,20 +62,31 @@ namespace internal {
 // The minimal source side is the set R of nodes reachable over residual arcs from the nodes with
 // positive excess: R lies in every minimum cut (each contains all excess and lets no residual arc
 // out), and cap(R) = cap(S) - (the excess of S \ R) = cap(S).
-template <class Capacity>
+//
+// The solver runs on any residual graph with the interface described in Pseudoflow_csr_graph.h; an arc
+// is named by its tail and an arc index of the graph (`parent_arc_[x]` is an arc out of x). A residual
+// may be +infinity: such an arc never saturates, and pushes along it leave it infinite.
+template <class Capacity, class Graph = Pseudoflow_csr_graph<Capacity> >
 class Pseudoflow_solver
 {
 public:
   typedef std::uint32_t Index;
 
-  explicit Pseudoflow_solver(const Max_flow_problem<Capacity>& problem) : problem_(problem) { build(); }
+  explicit Pseudoflow_solver(Graph& graph) : g_(graph)
+  {
+    const std::size_t n = graph.number_of_nodes();
+    // Labels run up to n + 1; `none` and `not_in_bucket` must differ from every node index.
+    if(n > std::size_t(0xFFFFFFFFu) - 3)
+      throw std::invalid_argument("MDCS: Pseudoflow_max_flow handles at most 2^32 - 4 nodes (32-bit indices); "
+                                  "the network has " + std::to_string(n));
+    n_ = Index(n);
+  }
 
   Pseudoflow_solver(const Pseudoflow_solver&) = delete;
   Pseudoflow_solver& operator=(const Pseudoflow_solver&) = delete;
 
-  // Runs the algorithm, fills the minimal source side and returns the max-flow value, computed
-  // as the capacity of that cut in the problem's own capacities.
-  Capacity run(std::vector<char>& on_source_side)
+  // Runs the algorithm and fills the minimal source side (the caller computes the cut's capacity).
+  void run(std::vector<char>& on_source_side)
   {
     initialise();
     for(;;) {
@@ -83,64 +95,15 @@ public:
       const Index r = bucket_head_[highest_];
       bucket_head_[highest_] = bucket_next_[r];
       if(bucket_head_[highest_] == none) bucket_tail_[highest_] = none;
-      in_bucket_[r] = 0;
+      bucket_next_[r] = not_in_bucket;
       process_root(r);
     }
     minimal_source_side(on_source_side);
-    return cut_capacity(on_source_side);
   }
-
-  std::size_t number_of_arcs() const { return head_.size(); }
 
 private:
   static constexpr Index none = 0xFFFFFFFFu;
-
-  void build()
-  {
-    const std::size_t n = problem_.number_of_nodes();
-    // Labels run up to n + 1 and `none` must differ from every node index.
-    if(n > std::size_t(0xFFFFFFFFu) - 2)
-      throw std::invalid_argument("MDCS: Pseudoflow_max_flow handles at most 2^32 - 3 nodes (32-bit indices); "
-                                  "the network has " + std::to_string(n));
-    n_ = Index(n);
-    const std::size_t m = problem_.number_of_arc_pairs();
-
-    // Pass 1: degrees, in 64 bits to detect more arcs than 32-bit arc indices allow.
-    std::vector<std::uint64_t> degree(n + 1, 0);
-    for(std::size_t k = 0; k < m; ++k) {
-      const auto p = problem_.arc_pair(k);
-      if(p.c_uv > 0 || p.c_vu > 0) { ++degree[p.u]; ++degree[p.v]; }
-    }
-    std::uint64_t total = 0;
-    for(std::size_t x = 0; x < n; ++x) {
-      const std::uint64_t d = degree[x];
-      degree[x] = total;
-      total += d;
-    }
-    degree[n] = total;
-    if(total >= std::uint64_t(none))
-      throw std::invalid_argument("MDCS: the network has " + std::to_string(total) + " arcs; Pseudoflow_max_flow "
-                                  "handles at most 2^32 - 2 (32-bit arc indices)");
-    first_.assign(degree.begin(), degree.end());
-    std::vector<std::uint64_t>().swap(degree);
-
-    // Pass 2: every arc next to its row; `current_` serves as the fill cursor and is reset later.
-    head_.resize(total);
-    reverse_.resize(total);
-    residual_.resize(total);
-    current_.assign(first_.begin(), first_.end() - 1);
-    for(std::size_t k = 0; k < m; ++k) {
-      const auto p = problem_.arc_pair(k);
-      if(!(p.c_uv > 0 || p.c_vu > 0)) continue;
-      const Index a = current_[p.u]++, b = current_[p.v]++;
-      head_[a] = p.v;
-      head_[b] = p.u;
-      residual_[a] = p.c_uv;
-      residual_[b] = p.c_vu;
-      reverse_[a] = b;
-      reverse_[b] = a;
-    }
-  }
+  static constexpr Index not_in_bucket = 0xFFFFFFFEu;
 
   void initialise()
   {
@@ -153,12 +116,13 @@ private:
     next_sibling_.assign(n, none);
     previous_sibling_.assign(n, none);
     scan_.assign(n, none);
-    bucket_next_.assign(n, none);
-    in_bucket_.assign(n, 0);
-    for(std::size_t x = 0; x < n; ++x) current_[x] = first_[x];
-    bucket_head_.assign(n + 2, none);
-    bucket_tail_.assign(n + 2, none);
-    count_.assign(n + 2, 0);
+    bucket_next_.assign(n, not_in_bucket);
+    current_.assign(n, 0);
+    // The per-label arrays grow with the highest label (labels only ever rise by one), which stays far
+    // below n in practice.
+    bucket_head_.assign(2, none);
+    bucket_tail_.assign(2, none);
+    count_.assign(2, 0);
     highest_ = 0;
 
     // Every node starts as a root: the deficit nodes are the weak roots, all others are strong
@@ -173,7 +137,7 @@ private:
     label_.assign(n, dead_);
     std::size_t head = 0, tail = 0;
     for(Index x = 0; x < n_; ++x) {
-      excess_[x] = problem_.source_capacity(x) - problem_.sink_capacity(x);
+      excess_[x] = g_.initial_excess(x);
       if(excess_[x] < 0) {
         label_[x] = 1;
         scan_[tail++] = x;
@@ -182,19 +146,31 @@ private:
     while(head < tail) {
       const Index x = scan_[head++];
       const Index next_label = label_[x] + 1;
-      for(Index a = first_[x]; a < first_[x + 1]; ++a) {
-        const Index y = head_[a];
-        if(label_[y] == dead_ && residual_[reverse_[a]] > 0) {
+      const Index d = g_.degree(x);
+      for(Index k = 0; k < d; ++k) {
+        const Index a = g_.arc(x, k);
+        const Index y = g_.head(x, a);
+        if(label_[y] == dead_ && g_.residual(y, g_.reverse(x, a)) > 0) {
           label_[y] = next_label;
           scan_[tail++] = y;
         }
       }
     }
+    if(tail > 0) ensure_label(label_[scan_[tail - 1]]); // the BFS ends with the highest label
     for(Index x = 0; x < n_; ++x) {
       if(label_[x] == dead_) continue;
       ++count_[label_[x]];
       if(excess_[x] >= 0) add_to_bucket(x);
     }
+  }
+
+  void ensure_label(Index l)
+  {
+    if(l < count_.size()) return;
+    const std::size_t size = (std::min)(std::size_t(n_) + 2, (std::max)(std::size_t(l) + 1, 2 * count_.size()));
+    bucket_head_.resize(size, none);
+    bucket_tail_.resize(size, none);
+    count_.resize(size, 0);
   }
 
   void add_to_bucket(Index x)
@@ -204,7 +180,6 @@ private:
     if(bucket_tail_[l] == none) bucket_head_[l] = x;
     else bucket_next_[bucket_tail_[l]] = x;
     bucket_tail_[l] = x;
-    in_bucket_[x] = 1;
     if(l > highest_) highest_ = l;
   }
 
@@ -232,14 +207,16 @@ private:
   // only by a push w -> x, which needs l(w) = l(x) + 1, and labels never decrease).
   bool find_merger(Index x, Index l, Index& arc)
   {
-    const Index end = first_[x + 1];
+    const Index end = g_.degree(x);
     const Index target = l - 1;
-    for(Index a = current_[x]; a < end; ++a)
-      if(residual_[a] > 0 && label_[head_[a]] == target) {
-        current_[x] = a;
+    for(Index k = current_[x]; k < end; ++k) {
+      const Index a = g_.arc(x, k);
+      if(label_[g_.head(x, a)] == target && g_.residual(x, a) > 0) {
+        current_[x] = k;
         arc = a;
         return true;
       }
+    }
     current_[x] = end;
     return false;
   }
@@ -247,6 +224,7 @@ private:
   void process_root(Index r)
   {
     const Index l = label_[r];
+    ensure_label(l + 1);
     Index arc = none;
     // Label 1 is the lowest label: no node has label 0, so there is nothing to merge into.
     const bool can_merge = l >= 2;
@@ -273,7 +251,7 @@ private:
       --count_[l];
       label_[x] = l + 1;
       ++count_[l + 1];
-      current_[x] = first_[x];
+      current_[x] = 0;
       if(x == r) break;
       x = parent_[x];
     }
@@ -284,22 +262,22 @@ private:
   // Re-roots r's tree at v, hangs it under w = head(arc) and pushes r's excess to the new root.
   void merge_and_push(Index r, Index v, Index arc)
   {
-    Index x = v, new_parent = head_[arc], new_arc = arc;
+    const Index w = g_.head(v, arc);
+    Index x = v, new_parent = w, new_arc = arc;
     for(;;) {
       const Index old_parent = parent_[x], old_arc = parent_arc_[x];
       if(old_parent != none) remove_from_parent(x);
       add_child(new_parent, x);
       parent_arc_[x] = new_arc;
       if(old_parent == none) break; // x == r
+      new_arc = g_.reverse(x, old_arc);
       new_parent = x;
-      new_arc = reverse_[old_arc];
       x = old_parent;
     }
 
     Capacity delta = excess_[r];
     excess_[r] = 0;
     x = r;
-    const Index w = head_[arc];
     bool past_merger = false;
     while(parent_[x] != none) {
       // From w on, every tree arc has residual > 0 (T), so pushing nothing changes nothing: a
@@ -307,25 +285,24 @@ private:
       if(x == w) past_merger = true;
       if(past_merger && delta == 0) return;
       const Index a = parent_arc_[x], p = parent_[x];
-      const Capacity available = residual_[a];
+      const Capacity available = g_.residual(x, a);
       if(delta >= available) {
         // Saturate and split: x keeps what the arc cannot take (exactly 0 when delta == available;
-        // it is still made a strong root, so that weak roots keep label 1).
-        residual_[a] = 0;
-        residual_[reverse_[a]] += available;
+        // it is still made a strong root, so that weak roots keep label 1). An infinite residual
+        // never gets here: the excesses are finite.
+        g_.saturate(x, a);
         excess_[x] = delta - available;
         remove_from_parent(x);
         add_to_bucket(x);
         delta = available;
       } else {
         // delta < available, so the difference is positive: (T) holds on this arc afterwards.
-        residual_[a] = available - delta;
-        residual_[reverse_[a]] += delta;
+        g_.push(x, a, delta);
       }
       x = p;
     }
     excess_[x] += delta;
-    if(!in_bucket_[x] && excess_[x] > 0) add_to_bucket(x);
+    if(bucket_next_[x] == not_in_bucket && excess_[x] > 0) add_to_bucket(x);
   }
 
   void kill_tree(Index r)
@@ -347,9 +324,7 @@ private:
   // 16 ulps of the capacities around x: a bound on the rounding error of its excess.
   Capacity rounding_noise(Index x) const
   {
-    Capacity total = problem_.source_capacity(x) + problem_.sink_capacity(x);
-    for(Index a = first_[x]; a < first_[x + 1]; ++a) total += residual_[a] + residual_[reverse_[a]];
-    return Capacity(16) * std::numeric_limits<Capacity>::epsilon() * total;
+    return Capacity(16) * std::numeric_limits<Capacity>::epsilon() * g_.capacity_scale(x);
   }
 
   // Nodes reachable over residual arcs from the nodes with positive excess. An excess within the
@@ -366,9 +341,11 @@ private:
       }
     while(top > 0) {
       const Index x = stack[--top];
-      for(Index a = first_[x]; a < first_[x + 1]; ++a) {
-        const Index y = head_[a];
-        if(!side[y] && residual_[a] > 0) {
+      const Index d = g_.degree(x);
+      for(Index k = 0; k < d; ++k) {
+        const Index a = g_.arc(x, k);
+        const Index y = g_.head(x, a);
+        if(!side[y] && g_.residual(x, a) > 0) {
           side[y] = 1;
           stack[top++] = y;
         }
@@ -376,29 +353,13 @@ private:
     }
   }
 
-  Capacity cut_capacity(const std::vector<char>& side) const
-  {
-    Capacity value = 0;
-    for(Index x = 0; x < n_; ++x) value += side[x] ? problem_.sink_capacity(x) : problem_.source_capacity(x);
-    const std::size_t m = problem_.number_of_arc_pairs();
-    for(std::size_t k = 0; k < m; ++k) {
-      const auto p = problem_.arc_pair(k);
-      if(side[p.u] && !side[p.v]) value += p.c_uv;
-      else if(!side[p.u] && side[p.v]) value += p.c_vu;
-    }
-    return value;
-  }
-
-  const Max_flow_problem<Capacity>& problem_;
+  Graph& g_;
   Index n_ = 0, dead_ = 1, highest_ = 0;
-  // Arcs in CSR order: 16 bytes per arc with double capacities.
-  std::vector<Index> first_, head_, reverse_;
-  std::vector<Capacity> residual_;
-  // Per node.
+  // Per node: 44 bytes with double capacities. `current_` is a position among the node's arcs;
+  // `bucket_next_` is `not_in_bucket` for a node outside the buckets.
   std::vector<Capacity> excess_;
   std::vector<Index> label_, parent_, parent_arc_, first_child_, next_sibling_, previous_sibling_, scan_,
     current_, bucket_next_;
-  std::vector<char> in_bucket_;
   // Per label.
   std::vector<Index> bucket_head_, bucket_tail_, count_;
 };

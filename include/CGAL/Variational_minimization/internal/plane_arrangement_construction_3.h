@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -58,8 +59,8 @@ public:
         auto corner = [&](std::uint32_t cu, std::uint32_t cw) {
           return (high << t) | (cu << u) | (cw << w);
         };
-        std::vector<std::uint32_t> poly = {corner(0, 0), 2 * w,     corner(1, 0), 2 * u + 1,
-                                           corner(1, 1), 2 * w + 1, corner(0, 1), 2 * u};
+        // Edges on the planes 2w, 2u+1, 2w+1, 2u in turn.
+        std::vector<std::uint32_t> poly = {corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)};
         const std::uint32_t f = std::uint32_t(a_.facets_.size());
         a_.facets_.push_back(Facet{2 * t + high, high ? 0u : null, high ? null : 0u});
         a_.polygons_.assign(a_.polygons_.add_list(), poly.data(), poly.data() + poly.size());
@@ -118,7 +119,7 @@ private:
       stack.pop_back();
       double lo = double(p.d), hi = double(p.d);
       for(int k = 0; k < 3; ++k) {
-        const double u = c[k] * double(n.lo[k]), w = c[k] * double(n.hi[k]);
+        const double u = c[k] * double(n.lo[k]), w = c[k] * upper_bound(n.hi[k]);
         lo += (std::min)(u, w);
         hi += (std::max)(u, w);
       }
@@ -137,7 +138,7 @@ private:
     for(const std::uint32_t* fi = a_.cell_facets_.begin(c); fi != a_.cell_facets_.end(c); ++fi) {
       const std::uint32_t* poly = a_.polygons_.begin(*fi);
       const std::size_t n = a_.polygons_.size(*fi);
-      for(std::size_t k = 0; k < n; k += 2) {
+      for(std::size_t k = 0; k < n; ++k) {
         const int s = side(poly[k]);
         pos = pos || s > 0;
         neg = neg || s < 0;
@@ -174,23 +175,23 @@ private:
 
   struct Chord
   {
-    std::uint32_t a, b, plane;
+    std::uint32_t a, b;
   };
 
-  void add_chord(std::uint32_t a, std::uint32_t b, std::uint32_t plane)
+  void add_chord(std::uint32_t a, std::uint32_t b)
   {
     for(const Chord& c : chords_)
       if((c.a == a && c.b == b) || (c.a == b && c.b == a)) return;
-    chords_.push_back(Chord{a, b, plane});
+    chords_.push_back(Chord{a, b});
   }
 
   // A one-sided polygon adds its edge lying on the new plane, if it has one.
-  void add_edge_chord(const std::vector<std::uint32_t>& poly, std::uint32_t plane)
+  void add_edge_chord(const std::vector<std::uint32_t>& poly)
   {
-    const std::size_t n = poly.size() / 2;
+    const std::size_t n = poly.size();
     for(std::size_t k = 0; k < n; ++k) {
       const std::size_t j = (k + 1) % n;
-      if(side(poly[2 * k]) == 0 && side(poly[2 * j]) == 0) add_chord(poly[2 * k], poly[2 * j], plane);
+      if(side(poly[k]) == 0 && side(poly[j]) == 0) add_chord(poly[k], poly[j]);
     }
   }
 
@@ -214,10 +215,10 @@ private:
       const std::uint32_t pf = a_.facets_[f].plane;
       poly_.assign(a_.polygons_.begin(f), a_.polygons_.end(f));
       const std::vector<std::uint32_t>& poly = poly_;
-      const std::size_t n = poly.size() / 2;
+      const std::size_t n = poly.size();
       bool any_pos = false, any_neg = false;
       for(std::size_t k = 0; k < n; ++k) {
-        const int s = side(poly[2 * k]);
+        const int s = side(poly[k]);
         any_pos = any_pos || s > 0;
         any_neg = any_neg || s < 0;
       }
@@ -227,16 +228,16 @@ private:
           pos.push_back(f);
         } else
           neg.push_back(f);
-        add_edge_chord(poly, pf);
+        add_edge_chord(poly);
         continue;
       }
       // Split: the polygon with the crossing vertices inserted, then its two sides.
       aug_.clear();
       for(std::size_t k = 0; k < n; ++k) {
-        const std::uint32_t v = poly[2 * k], e = poly[2 * k + 1], u = poly[2 * ((k + 1) % n)];
+        const std::uint32_t v = poly[k], u = poly[(k + 1) % n];
         const int s = side(v), t = side(u);
-        aug_.push_back({{v, e, std::uint32_t(s + 1)}});
-        if(s * t < 0) aug_.push_back({{split_vertex(v, u, pf, e), e, 1u}});
+        aug_.push_back({{v, std::uint32_t(s + 1)}});
+        if(s * t < 0) aug_.push_back({{split_vertex(v, u, pf, a_.common_plane(v, u, pf)), 1u}});
       }
       std::vector<std::uint32_t>& pn = pn_;
       std::vector<std::uint32_t>& pp = pp_;
@@ -246,17 +247,10 @@ private:
       int zeros = 0;
       const std::size_t m = aug_.size();
       for(std::size_t k = 0; k < m; ++k) {
-        const std::array<std::uint32_t, 3>& x = aug_[k];
-        const std::array<std::uint32_t, 3>& y = aug_[(k + 1) % m];
-        if(x[2] <= 1) {
-          pn.push_back(x[0]);
-          pn.push_back(y[2] <= 1 ? x[1] : h_);
-        }
-        if(x[2] >= 1) {
-          pp.push_back(x[0]);
-          pp.push_back(y[2] >= 1 ? x[1] : h_);
-        }
-        if(x[2] == 1) {
+        const std::array<std::uint32_t, 2>& x = aug_[k];
+        if(x[1] <= 1) pn.push_back(x[0]);
+        if(x[1] >= 1) pp.push_back(x[0]);
+        if(x[1] == 1) {
           if(zeros < 2) zero[zeros] = x[0];
           ++zeros;
         }
@@ -264,7 +258,7 @@ private:
       if(zeros != 2)
         throw std::logic_error("MDCS: Plane_arrangement_3: internal error: a split facet meets the plane in " +
                                std::to_string(zeros) + " vertices");
-      add_chord(zero[0], zero[1], pf);
+      add_chord(zero[0], zero[1]);
       const std::uint32_t g = std::uint32_t(a_.facets_.size());
       Facet piece = a_.facets_[f];
       const std::uint32_t other = piece.negative_cell == c ? piece.positive_cell : piece.negative_cell;
@@ -284,7 +278,6 @@ private:
     if(chords_.size() >= 3) {
       std::uint32_t first = chords_[0].a, next = chords_[0].b;
       poly.push_back(first);
-      poly.push_back(chords_[0].plane);
       done[0] = 1;
       std::size_t count = 1;
       while(next != first) {
@@ -294,12 +287,11 @@ private:
         done[k] = 1;
         ++count;
         poly.push_back(next);
-        poly.push_back(chords_[k].plane);
         next = chords_[k].a == next ? chords_[k].b : chords_[k].a;
       }
       if(next != first || count != chords_.size()) poly.clear();
     }
-    if(poly.size() < 6)
+    if(poly.size() < 3)
       throw std::logic_error("MDCS: Plane_arrangement_3: internal error: the section of a cell by a plane is not "
                              "a closed polygon");
     a_.polygons_.assign(nf, poly.data(), poly.data() + poly.size());
@@ -332,7 +324,7 @@ private:
   void rebuild_tree()
   {
     const std::size_t n = a_.cell_facets_.size();
-    std::vector<std::array<float, 6>> boxes(n);
+    std::vector<std::array<std::uint16_t, 6>> boxes(n);
     for(std::size_t c = 0; c < n; ++c) {
       typename Arrangement::Tree_node t;
       cell_box(std::uint32_t(c), t);
@@ -349,11 +341,12 @@ private:
     build_subtree(order.data(), order.data() + n, boxes);
   }
 
-  std::uint32_t build_subtree(std::uint32_t* b, std::uint32_t* e, const std::vector<std::array<float, 6>>& boxes)
+  std::uint32_t build_subtree(std::uint32_t* b, std::uint32_t* e,
+                              const std::vector<std::array<std::uint16_t, 6>>& boxes)
   {
     const std::uint32_t node = std::uint32_t(a_.nodes_.size());
     a_.nodes_.emplace_back();
-    float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+    std::uint16_t lo[3] = {0xFFFF, 0xFFFF, 0xFFFF}, hi[3] = {0, 0, 0};
     for(const std::uint32_t* c = b; c != e; ++c)
       for(int i = 0; i < 3; ++i) {
         lo[i] = (std::min)(lo[i], boxes[*c][i]);
@@ -367,7 +360,7 @@ private:
         if(hi[i] - lo[i] > hi[axis] - lo[axis]) axis = i;
       std::uint32_t* mid = b + (e - b) / 2;
       std::nth_element(b, mid, e, [&](std::uint32_t x, std::uint32_t y) {
-        const float cx = boxes[x][axis] + boxes[x][3 + axis], cy = boxes[y][axis] + boxes[y][3 + axis];
+        const int cx = int(boxes[x][axis]) + int(boxes[x][3 + axis]), cy = int(boxes[y][axis]) + int(boxes[y][3 + axis]);
         return cx < cy || (cx == cy && x < y);
       });
       child[0] = build_subtree(b, mid, boxes);
@@ -398,23 +391,27 @@ private:
     for(const std::uint32_t* fi = a_.cell_facets_.begin(cell); fi != a_.cell_facets_.end(cell); ++fi) {
       const std::uint32_t* poly = a_.polygons_.begin(*fi);
       const std::size_t m = a_.polygons_.size(*fi);
-      for(std::size_t k = 0; k < m; k += 2)
+      for(std::size_t k = 0; k < m; ++k)
         for(int i = 0; i < 3; ++i) {
           lo[i] = (std::min)(lo[i], a_.points_[poly[k]][i]);
           hi[i] = (std::max)(hi[i], a_.points_[poly[k]][i]);
         }
     }
+    // Whole lattice units, rounded outwards from the half-unit margin, clamped to the box [0, L] that contains
+    // every cell (65535 stands for L as an upper bound, see upper_bound()).
     for(int i = 0; i < 3; ++i) {
-      n.lo[i] = float(lo[i] - 0.5);
-      n.hi[i] = float(hi[i] + 0.5);
+      n.lo[i] = static_cast<std::uint16_t>((std::min)(65535.0, (std::max)(0.0, std::floor(lo[i] - 0.5))));
+      n.hi[i] = static_cast<std::uint16_t>((std::min)(65535.0, (std::max)(0.0, std::ceil(hi[i] + 0.5))));
     }
   }
+
+  static double upper_bound(std::uint16_t h) { return h == 0xFFFF ? double(Arrangement::lattice_size) : double(h); }
 
   Arrangement& a_;
   std::uint32_t h_ = 0;
   std::unordered_map<std::uint64_t, std::uint32_t> split_vertices_;
   std::vector<Chord> chords_;
-  std::vector<std::array<std::uint32_t, 3>> aug_; // vertex, edge plane, side + 1
+  std::vector<std::array<std::uint32_t, 2>> aug_; // vertex, side + 1
   std::vector<std::uint32_t> poly_, old_, neg_, pos_, pn_, pp_; // reused buffers
 };
 
@@ -439,16 +436,33 @@ Plane_arrangement_3::Plane_arrangement_3(const std::vector<Lattice_plane_3>& pla
   // Drop the scratch data and the tree (it only serves insertions: a later insert_plane() rebuilds one) first, so
   // that packing the lists does not raise the peak; then give back the slack of the containers (they grew by
   // doubling).
-  std::vector<std::uint32_t>().swap(side_epoch_);
-  std::vector<signed char>().swap(side_cache_);
-  std::vector<Tree_node>().swap(nodes_);
-  std::vector<std::uint32_t>().swap(node_of_cell_);
+  side_epoch_.release();
+  side_cache_.release();
+  nodes_.release();
+  node_of_cell_.release();
   polygons_.compact();
   cell_facets_.compact();
   facets_.shrink_to_fit();
   vertex_planes_.shrink_to_fit();
   points_.shrink_to_fit();
   reporter.finish();
+}
+
+inline Plane_arrangement_3::Plane_index Plane_arrangement_3::common_plane(Vertex_index u, Vertex_index v,
+                                                                         Plane_index exclude) const
+{
+  const std::array<Plane_index, 3>& tu = vertex_planes_[u];
+  const std::array<Plane_index, 3>& tv = vertex_planes_[v];
+  for(Plane_index p : tu)
+    if(p != exclude && (p == tv[0] || p == tv[1] || p == tv[2])) return p;
+  for(Plane_index p : tu)
+    if(p != exclude && side(v, p) == 0) return p;
+  for(Plane_index p : tv)
+    if(p != exclude && side(u, p) == 0) return p;
+  for(std::size_t p = 0; p < planes_.size(); ++p)
+    if(used_[p] && p != exclude && side(u, Plane_index(p)) == 0 && side(v, Plane_index(p)) == 0)
+      return Plane_index(p);
+  throw std::logic_error("MDCS: Plane_arrangement_3: internal error: no plane through an edge besides its facet's");
 }
 
 inline bool Plane_arrangement_3::insert_plane(const Lattice_plane_3& plane)

@@ -8,6 +8,8 @@
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_POOLED_INDEX_LISTS_3_H
 #define CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_POOLED_INDEX_LISTS_3_H
 
+#include <CGAL/Variational_minimization/internal/Growable_array_3.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -100,8 +102,8 @@ public:
       packed.insert(packed.end(), p, p + h.size);
     }
     offsets.push_back(std::uint32_t(packed.size()));
-    std::vector<Head>().swap(heads_);
-    std::vector<std::vector<std::uint32_t>>().swap(chunks_);
+    heads_.release();
+    std::vector<Growable_array_3<std::uint32_t>>().swap(chunks_);
     std::vector<std::uint32_t>().swap(free_);
     used_ = 0;
     offsets_.swap(offsets);
@@ -119,7 +121,10 @@ private:
   {
     std::uint32_t offset, size;
   };
-  static constexpr std::uint32_t chunk_bits = 20;
+  // Chunks of 32 MiB: above glibc's largest mmap threshold, so each is mapped on its own and given back to the
+  // system when freed (smaller ones would stay as holes in the heap after compact()); pages never touched
+  // cost no memory.
+  static constexpr std::uint32_t chunk_bits = 23;
   static constexpr std::uint32_t chunk_size = std::uint32_t(1) << chunk_bits;
   static constexpr std::uint32_t none = 0xFFFFFFFFu;
 
@@ -172,7 +177,10 @@ private:
     if((start & (chunk_size - 1)) + cap > chunk_size) start = ((start >> chunk_bits) + 1) << chunk_bits;
     if(start + cap >= std::size_t(none))
       throw std::invalid_argument("MDCS: Plane_arrangement_3: too many polygon or cell-list entries (32-bit offsets)");
-    while((start >> chunk_bits) >= chunks_.size()) chunks_.emplace_back(chunk_size);
+    while((start >> chunk_bits) >= chunks_.size()) {
+      chunks_.emplace_back();
+      chunks_.back().resize_uninitialized(chunk_size);
+    }
     used_ = start + cap;
     return std::uint32_t(start);
   }
@@ -200,8 +208,8 @@ private:
 
   std::uint32_t granularity_;
   // Unpacked form.
-  std::vector<Head> heads_;
-  std::vector<std::vector<std::uint32_t>> chunks_;
+  Growable_array_3<Head> heads_;
+  std::vector<Growable_array_3<std::uint32_t>> chunks_;
   std::vector<std::uint32_t> free_;
   std::size_t used_ = 0;
   // Packed form (compressed rows): list i is packed_[offsets_[i], offsets_[i + 1]).

@@ -52,6 +52,29 @@ inline std::array<Wall_curve_3, 4> wall_curves_3(const std::vector<std::array<st
   return out;
 }
 
+// A facet on a side wall (plane < 4): +1 if it lies below the lower boundary curve (its cell is tied to the
+// source), -1 above the upper curve (tied to the sink), 0 between them (relaxed boundary: no arc). The centroid
+// of the facet decides: the arrangement contains the boundary curves as edges (pencils of planes through their
+// segments), so each wall facet lies on one side of each curve.
+inline int side_wall_tie_3(const Plane_arrangement_3& arrangement, Plane_arrangement_3::Facet_index f,
+                           const std::array<Wall_curve_3, 4>& lower, const std::array<Wall_curve_3, 4>& upper)
+{
+  const Plane_arrangement_3::Plane_index wall = arrangement.facet(f).plane;
+  double s = 0, z = 0;
+  const std::size_t n = arrangement.facet_degree(f);
+  const int axis = wall < 2 ? 1 : 0;
+  for(std::size_t k = 0; k < n; ++k) {
+    const std::array<double, 3> p = arrangement.point(arrangement.facet_vertex(f, k));
+    s += p[axis];
+    z += p[2];
+  }
+  s /= double(n);
+  z /= double(n);
+  if(z < lower[wall](s)) return 1;
+  if(z > upper[wall](s)) return -1;
+  return 0;
+}
+
 // Cells are nodes. A non-vertical facet separates the cell below from the cell above: the arc below->above costs
 // the facet weight, the reverse arc is infinite, so every finite cut is the graph of a function. Vertical facets
 // are infinite both ways. Floor facets tie their cell to the source, ceiling facets to the sink, with their weight.
@@ -79,20 +102,9 @@ inline CGAL::Min_cut::Flow_network<double> surface_dual_network_3(const Plane_ar
     } else if(x.plane == 5) {
       network.add_sink_facet(inside, weights[i], id);
     } else if(x.plane < 4) {
-      // The centroid of the facet on the wall decides: the arrangement contains the boundary curves as edges
-      // (pencils of planes through their segments), so each wall facet lies on one side of each curve.
-      double s = 0, z = 0;
-      const std::size_t n = arrangement.facet_degree(f);
-      const int axis = x.plane < 2 ? 1 : 0;
-      for(std::size_t k = 0; k < n; ++k) {
-        const std::array<double, 3>& p = arrangement.point(arrangement.facet_vertex(f, k));
-        s += p[axis];
-        z += p[2];
-      }
-      s /= double(n);
-      z /= double(n);
-      if(z < lower[x.plane](s)) network.add_source_facet(inside, inf, id);
-      else if(z > upper[x.plane](s)) network.add_sink_facet(inside, inf, id);
+      const int tie = side_wall_tie_3(arrangement, f, lower, upper);
+      if(tie > 0) network.add_source_facet(inside, inf, id);
+      else if(tie < 0) network.add_sink_facet(inside, inf, id);
     } else {
       const Lattice_plane_3& p = arrangement.plane(x.plane);
       if(p.c == 0) network.add_facet(x.negative_cell, x.positive_cell, inf, inf, id);
