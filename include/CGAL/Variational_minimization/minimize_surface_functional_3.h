@@ -194,6 +194,7 @@ Surface_cut_3 surface_min_cut_3(const Plane_arrangement_3& arrangement, const st
   \param arrangement built from planes that include pencils through the boundary segments of `problem`
          (`surface_planes_3()`), so that the boundary curve is made of arrangement edges.
   \param weights the facet weights, from `surface_facet_weights_3()`.
+  \param problem the domain, the height range and the boundary conditions (the same as for the arrangement).
   \param engine a model of `MaxFlowEngine` (`CGAL::Min_cut::Boykov_kolmogorov_max_flow`,
          `CGAL::Min_cut::Push_relabel_max_flow`, `CGAL::Min_cut::Pseudoflow_max_flow`).
   \param progress a progress callback, stages `"network"` and `"max-flow"`.
