@@ -13,6 +13,22 @@
 
 using namespace mwt_test;
 
+namespace {
+
+// A solver model that perturbs the duals (CLP's duals times 1.5): the recomputed bound drops below the weight.
+struct Bad_duals
+{
+  const char* name() const { return "bad"; }
+  MWT::Linear_program_solution solve(const MWT::Sparse_linear_program& lp) const
+  {
+    auto s = MWT::CLP_linear_program_solver().solve(lp);
+    for(double& y : s.dual) y *= 1.5;
+    return s;
+  }
+};
+
+} // namespace
+
 TEST_CASE("mwt: CLP, GLPK and the exact GLPK model agree", "[mwt][solver]")
 {
   for(unsigned seed = 1; seed <= 4; ++seed) {
@@ -67,17 +83,6 @@ TEST_CASE("mwt: the LP has one row per used edge and hull rows equal to one", "[
 TEST_CASE("mwt: a wrong dual vector gives no certificate, the right one does", "[mwt][certificate]")
 {
   const auto p = uniform_points(30, 11);
-  // a solver model that perturbs the duals: the recomputed bound must drop below the weight
-  struct Bad_duals
-  {
-    const char* name() const { return "bad"; }
-    MWT::Linear_program_solution solve(const MWT::Sparse_linear_program& lp) const
-    {
-      auto s = MWT::CLP_linear_program_solver().solve(lp);
-      for(double& y : s.dual) y *= 1.5;
-      return s;
-    }
-  };
   MWT::Mwt_options o;
   const auto bad = MWT::minimum_weight_triangulation_2(p, o, Bad_duals(), nullptr);
   CHECK(bad.status == MWT::Mwt_status::optimal_uncertified);
@@ -100,16 +105,6 @@ TEST_CASE("mwt: the exact certificate (separated reduced costs) where the optimu
   }
   // The certificate holds for any dual vector: whenever one is given, also with perturbed duals, it agrees
   // with brute force; on 30 points the perturbed duals do not separate.
-  struct Bad_duals
-  {
-    const char* name() const { return "bad"; }
-    MWT::Linear_program_solution solve(const MWT::Sparse_linear_program& lp) const
-    {
-      auto s = MWT::CLP_linear_program_solver().solve(lp);
-      for(double& y : s.dual) y *= 1.5;
-      return s;
-    }
-  };
   for(unsigned seed = 1; seed <= 10; ++seed) {
     const auto p = uniform_points(4 + int(seed % 5), seed);
     const auto bad = MWT::minimum_weight_triangulation_2(p, MWT::Mwt_options(), Bad_duals(), nullptr);

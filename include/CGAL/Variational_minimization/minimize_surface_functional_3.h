@@ -94,6 +94,21 @@ struct Surface_cut_3
   std::vector<std::uint32_t> facets;
 };
 
+// The surface of a cut: infeasible when the cut is infinite, otherwise its facets as a mesh, with the energy
+// summed from `weight_of` (a weight vector or a per-facet callable).
+template <class WeightOf>
+Minimal_surface_3 surface_from_cut_3(const Plane_arrangement_3& arrangement, const Surface_problem_3& problem,
+                                     Surface_cut_3 cut, const WeightOf& weight_of)
+{
+  Minimal_surface_3 surface;
+  if(!cut.is_finite) return surface;
+  surface.is_feasible = true;
+  surface.solver_value = cut.value;
+  surface.facets.swap(cut.facets);
+  surface_mesh_from_facets(arrangement, problem, weight_of, surface);
+  return surface;
+}
+
 // Any engine: the dual network as a CGAL::Min_cut::Flow_network, solved by solve_min_cut().
 template <class Engine, class Progress>
 Surface_cut_3 surface_min_cut_3(const Plane_arrangement_3& arrangement, const std::vector<double>& weights,
@@ -211,14 +226,8 @@ Minimal_surface_3 minimize_surface_functional_3(const Plane_arrangement_3& arran
   problem.validate();
   if(weights.size() != arrangement.number_of_facets())
     throw std::invalid_argument("MDCS: minimize_surface_functional_3: one weight per arrangement facet is required");
-  internal::Surface_cut_3 cut = internal::surface_min_cut_3(arrangement, weights, problem, engine, progress);
-  Minimal_surface_3 surface;
-  if(!cut.is_finite) return surface;
-  surface.is_feasible = true;
-  surface.solver_value = cut.value;
-  surface.facets.swap(cut.facets);
-  internal::surface_mesh_from_facets(arrangement, problem, weights, surface);
-  return surface;
+  return internal::surface_from_cut_3(arrangement, problem,
+                                      internal::surface_min_cut_3(arrangement, weights, problem, engine, progress), weights);
 }
 
 /// Same, with the default max-flow engine of `CGAL::Min_cut::solve_min_cut()`.
@@ -257,14 +266,8 @@ Minimal_surface_3 minimize_surface_functional_3(const Plane_arrangement_3& arran
   const auto weight_of = [&](std::uint32_t f) {
     return surface_facet_weight_3(arrangement, problem, G, f, quadrature_level);
   };
-  internal::Surface_cut_3 cut = internal::surface_pseudoflow_cut_3(arrangement, weight_of, problem, progress, true);
-  Minimal_surface_3 surface;
-  if(!cut.is_finite) return surface;
-  surface.is_feasible = true;
-  surface.solver_value = cut.value;
-  surface.facets.swap(cut.facets);
-  internal::surface_mesh_from_facets(arrangement, problem, weight_of, surface);
-  return surface;
+  return internal::surface_from_cut_3(
+    arrangement, problem, internal::surface_pseudoflow_cut_3(arrangement, weight_of, problem, progress, true), weight_of);
 }
 
 } // namespace Variational_minimization
