@@ -12,8 +12,9 @@
 //   covers any numerical gap between neighbouring windows.
 // - Windows come out of a 4-ary heap by their minimal distance (lazy deletion by a stamp); they are stored
 //   in fixed-size blocks (Window_store.h) and freed windows are reused.
-// - Distances-only mode releases the windows of an edge as soon as the front has passed its largest value
-//   (a second heap of edges keyed by that value).
+// - The windows of an edge leave the propagation's store as soon as the front has passed the edge's largest
+//   value (a second heap of edges keyed by that value): the full-field mode first copies them, compacted,
+//   into the stored field (window_field.h); the distances-only mode just frees them.
 // - The stored field (windows, vertex distances) and its queries and path tracing are in window_field.h.
 // - Pruning (Xin and Wang's filter): a window, or a new piece of one, is dropped when a known vertex
 //   distance plus a straight segment beats it on its whole extent; vertex distances are kept current
@@ -104,6 +105,7 @@ public:
     vertex_stamp_.assign(mesh_.number_of_vertices, 0);
     expanded_stamp_.assign(mesh_.number_of_vertices, std::uint32_t(-1));
     face_sources_.clear();
+    this->reset_field(false);
     stats_ = Geodesic_statistics();
     live_windows_ = 0;
     front_ = FT(0);
@@ -181,6 +183,7 @@ public:
     const char* stage = "geodesic propagation";
     if(!progress(stage, 0.0))
       throw MDCS::Operation_cancelled(stage);
+    this->reset_field(keep_windows_);
     std::size_t pops = 0;
     while(!heap_.empty()) {
       const Heap_entry top = heap_.pop();
@@ -215,12 +218,12 @@ public:
       --unpropagated_[std::size_t(top_edge)];
       propagate(top.window);
       ++stats_.windows_propagated;
-      if(!keep_windows_) {
-        if(unpropagated_[std::size_t(top_edge)] == 0)
-          queue_edge_release(top_edge);
-        release_passed_edges(top.key);
-      }
-      if(!keep_windows_ && ++since_release_ >= release_interval_) {
+      // Both modes release the edges behind the front; the full-field mode first copies them into the
+      // stored field.
+      if(unpropagated_[std::size_t(top_edge)] == 0)
+        queue_edge_release(top_edge);
+      release_passed_edges(top.key);
+      if(++since_release_ >= release_interval_) {
         since_release_ = 0;
         release_final_edges(top.key);
         // a scan costs O(edges + windows): space the scans so that it stays O(1) per propagated window
@@ -249,12 +252,17 @@ public:
     }
     stats_.stopped_early = stopped_early_;
     stats_.stored_windows = live_windows_;
-    if(!keep_windows_) {
-      windows_.release();
-      std::vector<Index>().swap(free_windows_);
-      std::vector<Index>(mesh_.number_of_edges, -1).swap(edge_first_);
-      std::vector<Index>().swap(edge_hint_);
+    if(keep_windows_) {
+      for(std::size_t e = 0; e < edge_first_.size(); ++e)
+        if(edge_first_[e] >= 0)
+          this->store_edge_field(e);
+      stats_.stored_windows = this->field_windows_.size();
     }
+    note_memory();
+    windows_.release();
+    std::vector<Index>().swap(free_windows_);
+    std::vector<Index>(mesh_.number_of_edges, -1).swap(edge_first_);
+    std::vector<Index>().swap(edge_hint_);
     heap_.release();
     release_heap_.release();
     if(!progress(stage, 1.0))
@@ -284,14 +292,16 @@ private:
   void note_memory()
   {
     const std::size_t bytes = windows_.capacity() * sizeof(Window) +
-                              (heap_.capacity() + release_heap_.capacity()) * sizeof(Heap_entry);
+                              (heap_.capacity() + release_heap_.capacity()) * sizeof(Heap_entry) +
+                              this->field_bytes();
     if(bytes > stats_.peak_memory_bytes)
       stats_.peak_memory_bytes = bytes;
   }
 
-  // Distances-only mode frees the windows behind the front: an edge covered end to end by propagated
-  // windows whose values all lie below the front will never change again (everything still to come is at
-  // least the front), so its windows are released and later candidates are rejected at once.
+  // The windows behind the front leave the store: an edge covered end to end by propagated windows whose
+  // values all lie below the front will never change again (everything still to come is at least the
+  // front), so its windows are released (copied into the stored field first in full-field mode) and later
+  // candidates are rejected at once.
   //
   // The largest value on edge e if it is covered end to end by propagated windows, else -1.
   FT final_edge_bound(std::size_t e) const
@@ -318,6 +328,8 @@ private:
 
   void release_edge(std::size_t e)
   {
+    if(keep_windows_)
+      this->store_edge_field(e);
     while(edge_first_[e] >= 0)
       kill_window(edge_first_[e]);
     edge_closed_[e] = 1;

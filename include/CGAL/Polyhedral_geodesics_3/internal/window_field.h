@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -54,14 +55,32 @@ public:
 
   Index vertex_source(Index v) const { return vertex_source_[std::size_t(v)]; }
 
-  // Calls f(window) for every stored window of edge e, in order along the edge (tests and debugging).
+  // A window of the stored field, as the queries read it: the interval and the pseudo-source in the frame of
+  // the edge's canonical halfedge, the halfedge whose face it propagates into (-1 if none) and its source.
+  struct Field_window_view
+  {
+    FT b0, b1, sx, sy, sigma;
+    Index into_halfedge;
+    Index source;
+  };
+
+  // Calls f(Field_window_view) for every stored window of edge e, in order along the edge (full field only).
   template <class F>
   void for_each_window_on_edge(Index e, F f) const
   {
-    if(windows_.empty())
+    if(field_first_.empty())
       return;
-    for(Index wi = edge_first_[std::size_t(e)]; wi >= 0; wi = windows_[std::size_t(wi)].next)
-      f(windows_[std::size_t(wi)]);
+    const Index first = field_first_[std::size_t(e)];
+    if(first < 0)
+      return;
+    const Index h = mesh_.edge_halfedge[std::size_t(e)];
+    for(Index k = 0; k < field_count_[std::size_t(e)]; ++k) {
+      const Field_window& w = field_windows_[std::size_t(first + k)];
+      const std::uint32_t tag = field_tags_[std::size_t(first + k)];
+      const std::uint32_t side = tag & 3u;
+      const Index into = side == 0 ? h : (side == 1 ? mesh_.he_twin[std::size_t(h)] : Index(-1));
+      f(Field_window_view{w.b0, w.b1, w.sx, w.sy, w.sigma, into, Index(tag >> 2) - 1});
+    }
   }
 
   // ------------------------------------------------------------------------------------------------
@@ -183,10 +202,66 @@ protected:
   // The window seen from halfedge h (its edge's canonical halfedge or the twin, whose frame is mirrored).
   Local_window<FT> local_window(const Window& w, Index h) const
   {
-    if(h == mesh_.edge_halfedge[std::size_t(w.edge)])
-      return Local_window<FT>{w.b0, w.b1, w.sx, w.sy, w.sigma};
+    return local_window(w.b0, w.b1, w.sx, w.sy, w.sigma, h == mesh_.edge_halfedge[std::size_t(w.edge)], h);
+  }
+
+  Local_window<FT> local_window(const FT& b0, const FT& b1, const FT& sx, const FT& sy, const FT& sigma,
+                                bool h_is_canonical, Index h) const
+  {
+    if(h_is_canonical)
+      return Local_window<FT>{b0, b1, sx, sy, sigma};
     const FT L = mesh_.he_length[std::size_t(h)];
-    return Local_window<FT>{L - w.b1, L - w.b0, L - w.sx, -w.sy, w.sigma};
+    return Local_window<FT>{L - b1, L - b0, L - sx, -sy, sigma};
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // The stored field (full-field mode). The propagation copies the windows of an edge here once the edge
+  // is final (and the rest at the end of the run), in a compact form: 40 bytes of geometry and a 4-byte
+  // tag instead of the 64 bytes of the propagation's store, whose links, stamps and flags a finished edge
+  // no longer needs. The propagation's store then holds only the windows near the front, so the peak
+  // memory of a full-field run is about 44 bytes per final window.
+
+  struct Field_window
+  {
+    FT b0, b1, sx, sy, sigma;
+  };
+
+  void reset_field(bool keep)
+  {
+    field_windows_.release();
+    field_tags_.release();
+    if(keep) {
+      field_first_.assign(mesh_.number_of_edges, -1);
+      field_count_.assign(mesh_.number_of_edges, 0);
+    } else {
+      std::vector<Index>().swap(field_first_);
+      std::vector<Index>().swap(field_count_);
+    }
+  }
+
+  // Appends the windows of edge e (in order along the edge) to the stored field. Called once per edge.
+  void store_edge_field(std::size_t e)
+  {
+    const Index h = mesh_.edge_halfedge[e];
+    const Index first = Index(field_windows_.size());
+    Index n = 0;
+    for(Index wi = edge_first_[e]; wi >= 0; wi = windows_[std::size_t(wi)].next, ++n) {
+      const Window& w = windows_[std::size_t(wi)];
+      if(w.source < -1 || w.source >= Index(1 << 29))
+        throw std::length_error("CGAL::Polyhedral_geodesics_3: too many sources for the stored field");
+      const std::uint32_t side = w.into_halfedge == h ? 0u : (w.into_halfedge < 0 ? 2u : 1u);
+      const std::size_t i = field_windows_.emplace_back();
+      field_windows_[i] = Field_window{w.b0, w.b1, w.sx, w.sy, w.sigma};
+      field_tags_[field_tags_.emplace_back()] = (std::uint32_t(w.source + 1) << 2) | side;
+    }
+    field_first_[e] = n > 0 ? first : Index(-1);
+    field_count_[e] = n;
+  }
+
+  std::size_t field_bytes() const
+  {
+    return field_windows_.capacity() * sizeof(Field_window) + field_tags_.capacity() * sizeof(std::uint32_t) +
+           (field_first_.capacity() + field_count_.capacity()) * sizeof(Index);
   }
 
   bool finite_answer(const FT& value) const
@@ -331,7 +406,7 @@ protected:
       c.barycentric = s.barycentric;
       offer(c);
     }
-    if(windows_.empty())
+    if(field_first_.empty())
       return best;
     for(int k = 0; k < 3; ++k) {
       const Index g = 3 * f + k;
@@ -340,9 +415,9 @@ protected:
         continue;
       const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, k);
       const bool on_edge = b[std::size_t((k + 2) % 3)] == FT(0);
-      for(Index wi = edge_first_[std::size_t(e)]; wi >= 0; wi = windows_[std::size_t(wi)].next) {
-        const Window& w = windows_[std::size_t(wi)];
-        const Local_window<FT> lw = local_window(w, g);
+      const bool g_is_canonical = g == mesh_.edge_halfedge[std::size_t(e)];
+      for_each_window_on_edge(e, [&](const Field_window_view& w) {
+        const Local_window<FT> lw = local_window(w.b0, w.b1, w.sx, w.sy, w.sigma, g_is_canonical, g);
         if(w.into_halfedge == g) {
           // the point sees the window from its far side: straight to S if the segment crosses it
           FT x;
@@ -354,7 +429,7 @@ protected:
           if(x < lw.b0) x = lw.b0;
           if(x > lw.b1) x = lw.b1;
           if(!snap_to_end(g, x, skip_vertex))
-            continue;
+            return;
           Candidate c;
           c.kind = Candidate::EDGE_POINT;
           c.step = distance_2(x, FT(0), p.x, p.y);
@@ -366,7 +441,7 @@ protected:
         } else if(on_edge && !(p.x < lw.b0) && !(p.x > lw.b1)) {
           FT x = p.x;
           if(!snap_to_end(g, x, skip_vertex))
-            continue;
+            return;
           Candidate c;
           c.kind = Candidate::EDGE_POINT;
           c.value = window_distance_at(x, lw.sx, lw.sy, lw.sigma);
@@ -375,7 +450,7 @@ protected:
           c.t = x;
           offer(c);
         }
-      }
+      });
     }
     return best;
   }
@@ -452,8 +527,12 @@ protected:
   // ------------------------------------------------------------------------------------------------
   // State shared with the propagation
   const Mesh& mesh_;
-  Window_store<Window> windows_;
+  Window_store<Window> windows_;   // the propagation's windows (released at the end of a run)
   std::vector<Index> edge_first_;
+  Window_store<Field_window> field_windows_; // the stored field, edge by edge (full field only)
+  Window_store<std::uint32_t> field_tags_;   // per stored window: (source + 1) << 2 | side, side 0: into the
+                                             // canonical halfedge's face, 1: into the twin's, 2: none
+  std::vector<Index> field_first_, field_count_; // per edge: its first stored window (-1: none) and count
   std::vector<FT> dist_;
   std::vector<Index> vertex_source_;
   std::vector<Face_source> face_sources_;
