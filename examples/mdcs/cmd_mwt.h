@@ -150,7 +150,8 @@ inline std::string report(const MWT::Mwt_result& r)
   if(s.lmt_certain_edges > 0)
     o << "LMT-skeleton      " << s.lmt_certain_edges << " certain, " << s.lmt_possible_edges << " possible edges; "
       << s.lmt_solved_faces << " of " << s.lmt_faces << " faces by the dynamic program (" << s.dp_triangles
-      << " triangles); time " << s.time_lmt << " + " << s.time_face_dp << " s\n";
+      << " triangles, " << s.dp_exact_faces << " faces with " << s.dp_exact_decisions
+      << " decisions taken exactly); time " << s.time_lmt << " + " << s.time_face_dp << " s\n";
   return o.str();
 }
 

@@ -11,6 +11,7 @@
 #include <CGAL/Minimum_weight_triangulation_2/Mwt_result.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Candidate_edges_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Empty_triangles_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Face_dp_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Lmt_skeleton_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Validation_2.h>
@@ -216,10 +217,16 @@ public:
         r.weight = weight_of(chosen, &upper_weight_);
         const bool ok = r.lower_bound >= upper_weight_ - options_.certificate_tolerance * std::abs(upper_weight_);
         r.certificate_exact = fixed_.empty() && reduced_costs_separate(sol.dual, sol.primal);
+        if(!r.certificate_exact && fixed_.empty() && options_.exact_support_certificate) {
+          r.certificate_support = support_certificate(sol.dual, sol.primal, chosen);
+          r.certificate_exact = r.certificate_support > 0;
+        }
         r.status = (ok || r.certificate_exact) ? Mwt_status::certified_optimal : Mwt_status::optimal_uncertified;
-        r.message = r.certificate_exact ? "integral LP optimum, proven the unique minimum (exact certificate)"
-                    : ok                ? "integral LP optimum, dual bound certified"
-                                        : "integral LP optimum, dual bound not certified";
+        r.message = r.certificate_support > 0 ? "integral LP optimum, proven a minimum without tolerance (exact certificate "
+                                                "on the zero-reduced-cost support)"
+                    : r.certificate_exact ? "integral LP optimum, proven the unique minimum (exact certificate)"
+                    : ok                  ? "integral LP optimum, dual bound certified"
+                                          : "integral LP optimum, dual bound not certified";
       }
       stats_.time_certificate = since(t0);
       return finish(r);
@@ -335,6 +342,8 @@ private:
     stats_.lmt_solved_faces = dp.number_of_solved_faces();
     stats_.dp_triangles = dp.dp_triangles().size();
     stats_.lmt_largest_face = dp.largest_face();
+    stats_.dp_exact_faces = dp.number_of_exact_faces();
+    stats_.dp_exact_decisions = dp.number_of_exact_decisions();
     stats_.time_face_dp = since(t0);
     return out;
   }
@@ -445,6 +454,65 @@ private:
       else outside_min = std::min(outside_min, d.inf());
     }
     return outside_min > inside_max;
+  }
+
+  // The exact certificate of a dual degenerate optimum T* (chosen = its triangles). With the reduced costs d
+  // (intervals) of the duals y: eps = max over T* of d.sup, eps2 = max(0, -min over all of d.inf), N = |T*|,
+  // tau = 2 N (eps + eps2) (at least 1e-12); the support Z = {t : d_t.inf <= tau} holds T*. A triangulation T
+  // with k >= 1 triangles outside Z (reduced cost > tau each) and r = |T \ T*| <= N satisfies
+  // w(T) - w(T*) = sum_{T \ T*} d - sum_{T* \ T} d >= k tau - r eps2 - r eps > 0: strictly heavier. The
+  // If T* is not a minimum, an MWT M is strictly lighter, so M uses triangles of Z only. M is locally minimal,
+  // so the LMT-skeleton computed on the triangles of Z keeps M's edges possible, and its certain edges (possible
+  // edges crossed by no other) are in M (a triangulation is a maximal non-crossing set). They cut the hull into
+  // faces, solved over the triangles of Z by the exact face programs (Face_dp_2): the programs' total is at
+  // most w(M) < w(T*). So if every face is solved and the total equals w(T*) exactly (compare_length_sums), T*
+  // is a minimum, with no tolerance. Returns |Z| on success, 0 otherwise.
+  std::size_t support_certificate(const std::vector<double>& y, const std::vector<double>& x,
+                                  const std::vector<std::array<int, 3>>& chosen) const
+  {
+    if(y.size() != lp_.number_of_rows || x.size() != triangles_.size() || options_.triangle_weight ||
+       options_.metric != Edge_metric::L2)
+      return 0;
+    for(double v : y)
+      if(!std::isfinite(v)) return 0;
+    std::vector<double> lo(triangles_.size());
+    double eps = 0, eps2 = 0;
+    std::size_t N = 0;
+    for(std::size_t j = 0; j < triangles_.size(); ++j) {
+      const Interval d = reduced_cost(j, y);
+      lo[j] = d.inf();
+      eps2 = std::max(eps2, -d.inf());
+      if(x[j] > 0.5) { eps = std::max(eps, d.sup()); ++N; }
+    }
+    const double tau = std::max(1e-12, 2 * double(N) * (eps + eps2) * (1 + 1e-9));
+    if(!(tau < 1e-3)) return 0;   // duals too inaccurate for a useful support
+    std::vector<internal::Lp_triangle> Z;
+    for(std::size_t j = 0; j < triangles_.size(); ++j)
+      if(x[j] > 0.5 || lo[j] <= tau) Z.push_back(triangles_[j]);
+    // the LMT-skeleton on the triangles of Z: an MWT inside Z is locally minimal with triangles of Z
+    const internal::Edge_triangles by_edge(Z, edges_.size());
+    std::function<bool(const char*, double)> progress = options_.progress;
+    const std::vector<char> state = internal::lmt_skeleton(pts_, edges_, Z, by_edge, is_hull_, progress);
+    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, Z, by_edge, state);
+    if(dp.number_of_solved_faces() + 1 != dp.number_of_faces()) return 0;   // all but the outer face
+    std::vector<internal::Length_segment> A, B;
+    std::vector<std::pair<int, int>> ea, eb;
+    for(int t : dp.dp_triangles())
+      for(int i = 0; i < 3; ++i) ea.emplace_back(std::minmax(Z[t].v[i], Z[t].v[(i + 1) % 3]));
+    for(const auto& t : chosen)
+      for(int i = 0; i < 3; ++i) eb.emplace_back(std::minmax(t[i], t[(i + 1) % 3]));
+    for(auto* E : {&ea, &eb}) {
+      std::sort(E->begin(), E->end());
+      E->erase(std::unique(E->begin(), E->end()), E->end());
+    }
+    // the programs' triangles must cover the hull once: as many as T* and the same hull edges
+    if(dp.dp_triangles().size() != chosen.size() || ea.size() != eb.size()) return 0;
+    auto seg = [&](const std::pair<int, int>& e) {
+      return internal::Length_segment{{pts_.x(e.first), pts_.y(e.first), pts_.x(e.second), pts_.y(e.second)}};
+    };
+    for(const auto& e : ea) A.push_back(seg(e));
+    for(const auto& e : eb) B.push_back(seg(e));
+    return internal::compare_length_sums(A, B) == 0 ? Z.size() : 0;
   }
 
   double dual_lower_bound(const std::vector<double>& y) const

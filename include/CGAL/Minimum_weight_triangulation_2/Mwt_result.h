@@ -34,9 +34,13 @@ enum class Lp_solver_choice { automatic, clp, glpk, exact };
     and the duals separate it, the certificate is exact instead (`Mwt_result::certificate_exact`): any
     triangulation T differs from the optimum T* in as many triangles as T* differs from T, and its weight
     exceeds that of T* by the sum of the reduced costs of T \ T* minus that of T* \ T, which is positive
-    when the smallest reduced cost outside T* exceeds the largest inside it. With `use_lmt_skeleton`, the
-    faces solved by the dynamic program are optimal by the exact LMT-skeleton and an exhaustive program in
-    double precision (no LP there; when every face is solved no LP is built at all).
+    when the smallest reduced cost outside T* exceeds the largest inside it. When the LP is dual degenerate (random
+    sets), the exact certificate can still hold on the triangles of (near) zero reduced cost
+    (`Mwt_result::certificate_support`): T* is then proven a minimum without tolerance. With `use_lmt_skeleton`, the
+    faces solved by the dynamic program are optimal by the exact LMT-skeleton and an exhaustive program whose
+    every decision is exact for the double coordinates (double sums with a forward error bound, an exact
+    comparison of sums of square roots where that bound does not decide; no LP there, and when every face is
+    solved no LP is built at all).
   - `optimal_after_branch_and_bound`: the LP optimum was fractional; the binary program solved by GLPK's
     branch and cut (floating point, gap 0) gave this triangulation, validated exactly. `lower_bound` is the
     rigorous LP bound.
@@ -78,6 +82,9 @@ struct Mwt_options
   /// Euclidean metric only: LMT-skeleton on the candidate edges, the dynamic program on the simple faces its
   /// certain edges leave, the triangle LP on the rest (the impossible edges removed from it).
   bool use_lmt_skeleton = false;
+  /// LP path, Euclidean metric: when the duals do not separate the optimum, try the exact certificate on the
+  /// triangles of (near) zero reduced cost (`Mwt_result::certificate_support`).
+  bool exact_support_certificate = true;
   /// Progress/cancel callback `bool(const char* stage, double fraction)`; see CGAL/MDCS/progress.h.
   std::function<bool(const char*, double)> progress;
 };
@@ -92,6 +99,10 @@ struct Mwt_statistics
   /// by the dynamic program, its triangles, the largest face (vertices on its boundary walk).
   std::size_t lmt_certain_edges = 0, lmt_possible_edges = 0, lmt_faces = 0, lmt_solved_faces = 0, dp_triangles = 0,
               lmt_largest_face = 0;
+  /// Faces of the dynamic programs where a decision was ambiguous in double precision (the winner's error
+  /// bound overlapped another candidate's) and was taken by the exact comparison of sums of square roots;
+  /// the number of such decisions.
+  std::size_t dp_exact_faces = 0, dp_exact_decisions = 0;
   double time_lmt = 0, time_face_dp = 0;
   /// input checks, convex hull and grid (and, in minimum_weight_triangulation_2(), the Hilbert sort of the points)
   double time_setup = 0;
@@ -114,6 +125,11 @@ struct Mwt_result
   /// square roots), which proves it the unique minimum (see `Mwt_status`). Only on the LP path without faces
   /// solved by the dynamic programs.
   bool certificate_exact = false;
+  /// When the duals do not separate the optimum (dual degenerate LP, e.g. random point sets), the exact
+  /// certificate can still hold on the zero-reduced-cost support (`Mwt_options::exact_support_certificate`):
+  /// the number of triangles of that support (0: not used or not proven). The optimum is then proven a
+  /// minimum without tolerance, not necessarily the unique one.
+  std::size_t certificate_support = 0;
   std::string solver, message;
   Mwt_statistics statistics;
 

@@ -2,12 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // convex_polygon_mwt_2(): the O(k^3) dynamic program (Klincsek) for the minimum weight triangulation of a
-// convex polygon.
+// convex polygon. Its decisions are exact for the double coordinates: double sums with a forward error bound,
+// and an exact comparison of the sums of lengths where the bound does not separate the best candidate
+// (internal/Exact_length_sum_2.h).
 
 #ifndef CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_CONVEX_POLYGON_MWT_2_H
 #define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_CONVEX_POLYGON_MWT_2_H
 
 #include <CGAL/Minimum_weight_triangulation_2/Mwt_result.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
 
@@ -26,12 +29,16 @@ namespace Minimum_weight_triangulation_2 {
   counter-clockwise order, by dynamic programming in O(k^3) time and O(k^2) memory.
 
   Writes the k-2 triangles (index triples into the input, counter-clockwise) to `out` and returns the
-  weight (sum of all edge lengths, boundary included).
+  weight (sum of all edge lengths, boundary included). Every choice of the program is exact for the double
+  coordinates of the vertices (a minimum of exact sums of lengths, ties broken by the smallest apex index):
+  sums are compared in double where a forward error bound decides, exactly otherwise; `exact_decisions`, if
+  given, receives the number of exact comparisons made.
   \throws std::invalid_argument when fewer than 3 vertices are given or the polygon is not strictly
   convex and counter-clockwise (checked with the kernel's exact orientation).
 */
 template <class PointRange, class OutputIterator>
-double convex_polygon_mwt_2(const PointRange& polygon, OutputIterator out, Edge_metric metric = Edge_metric::L2)
+double convex_polygon_mwt_2(const PointRange& polygon, OutputIterator out, Edge_metric metric = Edge_metric::L2,
+                            std::size_t* exact_decisions = nullptr)
 {
   typedef typename std::iterator_traits<decltype(std::begin(polygon))>::value_type Point_2;
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
@@ -55,19 +62,53 @@ double convex_polygon_mwt_2(const PointRange& polygon, OutputIterator out, Edge_
       default: return std::sqrt(dx * dx + dy * dy);
     }
   };
+  std::vector<double> x(std::size_t(k), 0.0), y(std::size_t(k), 0.0);
+  for(int i = 0; i < k; ++i) { x[i] = CGAL::to_double(p[i].x()); y[i] = CGAL::to_double(p[i].y()); }
   // D[i][j]: minimum total length of the diagonals triangulating the sub-polygon i, i+1, ..., j.
   std::vector<double> D(std::size_t(k) * k, 0.0);
   std::vector<int> best(std::size_t(k) * k, -1);
+  const internal::Length_sum_error_bound err(2 * std::size_t(k));
+  std::size_t exact = 0;
+  // the diagonals of the sub-polygon i..j with apex c (best[] final inside), appended to `o`
+  auto segments = [&](int i0, int j0, int c0, std::vector<internal::Length_segment>& o) {
+    std::vector<std::array<int, 3>> stack{{i0, j0, c0}};
+    while(!stack.empty()) {
+      const auto t = stack.back();
+      stack.pop_back();
+      const int i = t[0], j = t[1], c = t[2];
+      if(c > i + 1) { o.push_back({{x[i], y[i], x[c], y[c]}}); stack.push_back({i, c, best[i * k + c]}); }
+      if(j > c + 1) { o.push_back({{x[c], y[c], x[j], y[j]}}); stack.push_back({c, j, best[c * k + j]}); }
+    }
+  };
   for(int gap = 2; gap < k; ++gap)
     for(int i = 0; i + gap < k; ++i) {
       const int j = i + gap;
-      double m = std::numeric_limits<double>::infinity();
+      double m = std::numeric_limits<double>::infinity(), second = m;
+      auto value = [&](int c) { return D[i * k + c] + D[c * k + j] + (c > i + 1 ? len(i, c) : 0.0) + (j > c + 1 ? len(c, j) : 0.0); };
       for(int c = i + 1; c < j; ++c) {
-        const double v = D[i * k + c] + D[c * k + j] + (c > i + 1 ? len(i, c) : 0.0) + (j > c + 1 ? len(c, j) : 0.0);
-        if(v < m) { m = v; best[i * k + j] = c; }
+        const double v = value(c);
+        if(v < m) { second = m; m = v; best[i * k + j] = c; }
+        else if(v < second) second = v;
+      }
+      if(gap > 2 && !err.certainly_less(m, second)) {
+        // ambiguous in double: the exact minimum, the smallest apex on exact ties
+        std::vector<internal::Length_segment> cs, s;
+        int cc = -1;
+        double cv = m;
+        for(int c = i + 1; c < j; ++c) {
+          const double v = value(c);
+          if(err.certainly_less(m, v)) continue;
+          s.clear();
+          segments(i, j, c, s);
+          if(cc < 0 || internal::compare_length_sums(s, cs, metric) < 0) { cc = c; cv = v; cs.swap(s); }
+        }
+        best[i * k + j] = cc;
+        m = cv;
+        ++exact;
       }
       D[i * k + j] = m;
     }
+  if(exact_decisions) *exact_decisions = exact;
   std::vector<std::array<int, 2>> stack{{0, k - 1}};
   while(!stack.empty()) {
     const auto ij = stack.back();

@@ -7,10 +7,16 @@
 // an input point or an island inside has no such triangulation (every triangle must be empty), so the
 // program fails there and the face is left to the LP. Face tracing sorts the certain edges around each
 // vertex with exact orientations.
+//
+// Every decision of the programs (which apex, which spoke) is exact for the double coordinates: the sums are
+// compared in double with the forward error bound of Exact_length_sum_2.h; when the best candidate is not
+// certainly below another one, the contenders are compared exactly (compare_length_sums: cancelled common
+// edges, merged radicands, MPFR refinement) and the exact minimum is kept, ties broken by the smallest index.
 
 #ifndef CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_FACE_DP_2_H
 #define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_FACE_DP_2_H
 
+#include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Lmt_skeleton_2.h>
 
 #include <algorithm>
@@ -71,8 +77,10 @@ public:
     solved_.assign(faces_.size(), 0);
     for(std::size_t f = 0; f < faces_.size(); ++f)
       if(faces_[f].size() <= max_face) {
+        face_exact_ = false;
         solved_[f] = solve_face(faces_[f], -1);
         if(!solved_[f] && inner_count[f] == 1) solved_[f] = solve_face(faces_[f], inner_point[f]);
+        if(face_exact_) ++exact_faces_;
       }
   }
 
@@ -103,6 +111,10 @@ public:
 
   /// Number of faces solved with one interior point (a wheel-like face).
   std::size_t number_of_one_point_faces() const { return one_point_faces_; }
+  /// Faces where some decision of a program was ambiguous in double precision and taken exactly.
+  std::size_t number_of_exact_faces() const { return exact_faces_; }
+  /// Number of such exact decisions (all faces).
+  std::size_t number_of_exact_decisions() const { return exact_decisions_; }
 
 private:
   // the face of the certain edges that holds triangle t (all of its edges possible), -1 if all its vertices are isolated
@@ -169,7 +181,13 @@ private:
     return !(pts_.orientation(a, b, next) >= 0 && pts_.orientation(b, a, prev) >= 0);
   }
 
-  double len(int a, int b) const { return std::hypot(pts_.x(b) - pts_.x(a), pts_.y(b) - pts_.y(a)); }
+  // correctly rounded operations only (the error bound of Length_sum_error_bound relies on it)
+  double len(int a, int b) const
+  {
+    const double dx = pts_.x(b) - pts_.x(a), dy = pts_.y(b) - pts_.y(a);
+    return std::sqrt(dx * dx + dy * dy);
+  }
+  Length_segment segment(int a, int b) const { return Length_segment{{pts_.x(a), pts_.y(a), pts_.x(b), pts_.y(b)}}; }
 
   // alive empty counter-clockwise triangle (a, b, c), or -1
   int live_triangle(int a, int b, int c) const
@@ -216,24 +234,66 @@ private:
         if(j == i + m - 1) { dlen[id(i, j)] = 0; continue; }   // the boundary edge F[i-1] F[i]
         const int e = index_.find(at(i), at(j));
         if(e < 0 || state_[e] == lmt_impossible) continue;
-        if(in_cone(F, i, j % m) && in_cone(F, j % m, i)) dlen[id(i, j)] = len(at(i), at(j));
+        if(in_cone(F, i, j % m) && in_cone(F, j % m, i)) {
+          dlen[id(i, j)] = len(at(i), at(j));
+          if(!std::isfinite(dlen[id(i, j)])) return false;   // overflow: leave the face to the LP
+        }
       }
     }
+    // every value below is a sum of at most 2m + 2 computed lengths
+    const Length_sum_error_bound err(2 * m + 2);
+    // the diagonals of chain (i, j) as chosen (K final for it), appended to `out`
+    auto chain_segments = [&](std::size_t i, std::size_t j, std::vector<Length_segment>& out) {
+      std::vector<std::pair<std::size_t, std::size_t>> stack{{i, j}};
+      while(!stack.empty()) {
+        const auto ij = stack.back();
+        stack.pop_back();
+        if(ij.second - ij.first < 2) continue;
+        if(ij.second - ij.first <= m - 2) out.push_back(segment(at(ij.first), at(ij.second)));   // else the boundary edge
+        const std::size_t k = std::size_t(K[id(ij.first, ij.second)]);
+        stack.emplace_back(ij.first, k);
+        stack.emplace_back(k % m, k % m + (ij.second - k));
+      }
+    };
     // chains up to m - 1 steps (a chain of m steps would close the cycle)
     for(std::size_t d = 2; d < m; ++d)
       for(std::size_t i = 0; i < m; ++i) {
         const std::size_t j = i + d;
         if(dlen[id(i, j)] < 0) continue;
-        double best = HUGE_VAL;
+        double best = HUGE_VAL, second = HUGE_VAL;   // second: the least other live candidate near the best
         int bk = -1;
         for(std::size_t k = i + 1; k < j; ++k) {
           const std::size_t k0 = k % m;
           const std::size_t kj = k0 + (j - k);   // chain (k, j) re-based at k mod m
           if(dlen[id(i, k)] < 0 || dlen[id(k0, kj)] < 0) continue;
           const double w = W[id(i, k)] + W[id(k0, kj)];
-          if(!(w < best) || live_triangle(at(i), at(k), at(j)) < 0) continue;
-          best = w;
-          bk = int(k);
+          if(w < best) {
+            if(live_triangle(at(i), at(k), at(j)) < 0) continue;
+            second = best;
+            best = w;
+            bk = int(k);
+          } else if(w < second && !err.certainly_less(best, w) && live_triangle(at(i), at(k), at(j)) >= 0)
+            second = w;
+        }
+        if(bk >= 0 && second != HUGE_VAL && !err.certainly_less(best, second)) {
+          // ambiguous in double: the exact minimum among the contenders, the smallest k on exact ties
+          std::vector<Length_segment> cs, s;
+          int ck = -1;
+          double cw = HUGE_VAL;
+          for(std::size_t k = i + 1; k < j; ++k) {
+            const std::size_t k0 = k % m, kj = k0 + (j - k);
+            if(dlen[id(i, k)] < 0 || dlen[id(k0, kj)] < 0) continue;
+            const double w = W[id(i, k)] + W[id(k0, kj)];
+            if(w == HUGE_VAL || err.certainly_less(best, w) || live_triangle(at(i), at(k), at(j)) < 0) continue;
+            s.clear();
+            chain_segments(i, k, s);
+            chain_segments(k0, kj, s);
+            if(ck < 0 || compare_length_sums(s, cs) < 0) { ck = int(k); cw = w; cs.swap(s); }
+          }
+          bk = ck;
+          best = cw;
+          face_exact_ = true;
+          ++exact_decisions_;
         }
         if(bk >= 0) { W[id(i, j)] = best + dlen[id(i, j)]; K[id(i, j)] = bk; }
       }
@@ -264,30 +324,81 @@ private:
     for(std::size_t i = 0; i < m; ++i) {
       const int e = index_.find(c, F[i]);
       if(e >= 0 && state_[e] != lmt_impossible) spoke[i] = len(c, F[i]);
+      if(!std::isfinite(spoke[i])) return false;
     }
-    double best = HUGE_VAL;
-    std::vector<int> best_prev;
+    // the edges of the spokes and sectors of the path 0 .. t from spoke s (prev final up to t)
+    auto path_segments = [&](std::size_t s, const std::vector<int>& prev, std::size_t t, std::vector<Length_segment>& out) {
+      out.push_back(segment(c, F[s]));
+      while(t > 0) {
+        const std::size_t u = std::size_t(prev[t]);
+        if(t < m) out.push_back(segment(c, F[(s + t) % m]));
+        chain_segments((s + u) % m, (s + u) % m + (t - u), out);
+        t = u;
+      }
+    };
+    double best = HUGE_VAL, best_second = HUGE_VAL;
     std::size_t best_s = 0;
-    std::vector<double> D(m + 1);
-    std::vector<int> prev(m + 1);
+    std::vector<double> D(m + 1), Dm(m, HUGE_VAL);
+    std::vector<std::vector<int>> prevs(m);
     for(std::size_t s = 0; s < m; ++s) {   // s: the first spoke
       if(spoke[s] < 0) continue;
+      std::vector<int>& prev = prevs[s];
+      prev.assign(m + 1, -1);
       // D[t]: chain s .. s + t with spokes at both ends, t = 0 .. m
       std::fill(D.begin(), D.end(), HUGE_VAL);
       D[0] = spoke[s];
+      auto step = [&](std::size_t u, std::size_t t) {
+        if(D[u] == HUGE_VAL || (u == 0 && t == m)) return HUGE_VAL;
+        const double w = sector(s + u, s + t);
+        if(w == HUGE_VAL) return HUGE_VAL;
+        return D[u] + w + (t == m ? 0 : spoke[(s + t) % m]);
+      };
       for(std::size_t t = 1; t <= m; ++t) {
         if(spoke[(s + t) % m] < 0) continue;
+        double second = HUGE_VAL;
         for(std::size_t u = 0; u < t; ++u) {
-          if(D[u] == HUGE_VAL || (u == 0 && t == m)) continue;
-          const double w = sector(s + u, s + t);
-          if(w == HUGE_VAL) continue;
-          const double v = D[u] + w + (t == m ? 0 : spoke[(s + t) % m]);
-          if(v < D[t]) { D[t] = v; prev[t] = int(u); }
+          const double v = step(u, t);
+          if(v < D[t]) { second = D[t]; D[t] = v; prev[t] = int(u); }
+          else if(v < second) second = v;
+        }
+        if(D[t] != HUGE_VAL && second != HUGE_VAL && !err.certainly_less(D[t], second)) {
+          std::vector<Length_segment> cs, sg;
+          int cu = -1;
+          double cv = HUGE_VAL;
+          for(std::size_t u = 0; u < t; ++u) {
+            const double v = step(u, t);
+            if(v == HUGE_VAL || err.certainly_less(D[t], v)) continue;
+            sg.clear();
+            path_segments(s, prev, u, sg);
+            if(t < m) sg.push_back(segment(c, F[(s + t) % m]));
+            chain_segments((s + u) % m, (s + u) % m + (t - u), sg);
+            if(cu < 0 || compare_length_sums(sg, cs) < 0) { cu = int(u); cv = v; cs.swap(sg); }
+          }
+          prev[t] = cu;
+          D[t] = cv;
+          face_exact_ = true;
+          ++exact_decisions_;
         }
       }
-      if(D[m] < best) { best = D[m]; best_prev = prev; best_s = s; }
+      Dm[s] = D[m];
+      if(D[m] < best) { best_second = best; best = D[m]; best_s = s; }
+      else if(D[m] < best_second) best_second = D[m];
     }
     if(best == HUGE_VAL) return false;
+    if(best_second != HUGE_VAL && !err.certainly_less(best, best_second)) {
+      std::vector<Length_segment> cs, sg;
+      int cs_s = -1;
+      for(std::size_t s = 0; s < m; ++s) {
+        if(Dm[s] == HUGE_VAL || err.certainly_less(best, Dm[s])) continue;
+        sg.clear();
+        path_segments(s, prevs[s], m, sg);
+        if(cs_s < 0 || compare_length_sums(sg, cs) < 0) { cs_s = int(s); cs.swap(sg); }
+      }
+      best_s = std::size_t(cs_s);
+      face_exact_ = true;
+      ++exact_decisions_;
+    }
+    const std::vector<int>& best_prev = prevs[best_s];
     for(std::size_t t = m; t > 0;) {
       const std::size_t u = std::size_t(best_prev[t]);
       const std::size_t i = best_s + u, j = best_s + t;
@@ -311,7 +422,8 @@ private:
   std::vector<std::vector<int>> faces_;
   std::vector<char> solved_;
   std::vector<int> dp_tri_;
-  std::size_t one_point_faces_ = 0;
+  std::size_t one_point_faces_ = 0, exact_faces_ = 0, exact_decisions_ = 0;
+  bool face_exact_ = false;
 };
 
 } // namespace internal
