@@ -9,9 +9,15 @@
 //      selection; energies, times, memory.
 //
 //   bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3] [--csv-prefix PATH]
+//                   [--blob-runs N] [--blob-first SEED] [--blob-starts N] [--blob-rounds R] [--blob-planes N]
+//                   [--blob-near F] [--jobs J]
 //
 // --budget (default 60): part 1 stops growing once one row took longer than this (build + weights + cuts).
 // --large: part 1 goes on to about 3M cells (the goal sizes of issue 6) whatever the budget.
+// Part 3: N global runs (seeds SEED..SEED+N-1, default 8 from 100), N local descents (default 100), plane selection
+// with N planes x R rounds (default 160 x 6; --blob-near F: a share F of the redrawn planes near the optimum);
+// --jobs J runs them on J threads (each run single-threaded; the peak
+// memory column is then not measured).
 // CSV files: PATH_table22.csv, PATH_scherk.csv, PATH_blobs.csv (default PATH: surface).
 
 #include <CGAL/Min_cut/solve_min_cut.h>
@@ -30,6 +36,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -40,6 +47,8 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <thread>
+#include <limits>
 #include <vector>
 
 namespace VM = CGAL::Variational_minimization;
@@ -240,7 +249,89 @@ void part_scherk(bool quick, const std::string& prefix)
   }
 }
 
-void part_blobs(bool quick, const std::string& prefix)
+// The settings of part 3 (command line: --blob-runs, --blob-first, --blob-starts, --blob-rounds, --blob-planes,
+// --jobs).
+struct Blob_settings
+{
+  int runs = 8;            // global runs (seeds first, first + 1, ...)
+  int first = 100;         // first seed
+  int starts = 100;        // random-start local descents
+  int rounds = 6;          // plane selection rounds
+  long planes_select = 160;
+  long planes_global = 200;
+  int jobs = 1;            // runs in parallel threads (each single-threaded); peak memory only with 1
+  double near = 0;         // plane selection: share of the redrawn planes near the optimum (selection_near_fraction)
+};
+
+// One global run of the blob problem: one solve, and plane selection whose every distinct round optimum is relaxed.
+struct Blob_run
+{
+  std::size_t global_cells = 0, selection_cells = 0;
+  double global_discrete = 0, global_relaxed = 0, global_seconds = 0, global_peak = -1;
+  double selection_discrete = 0, selection_final_relaxed = 0, selection_relaxed = 0, selection_seconds = 0,
+         selection_peak = -1;
+  int selection_best_round = 0, relaxed_rounds = 0;
+};
+
+template <class Functional>
+Blob_run blob_run(const VM::Surface_problem_3& P, const Functional& G, const Blob_settings& b, int r,
+                  const VM::Surface_relaxation_options_3& ro)
+{
+  Blob_run out;
+  VM::Surface_plane_options_3 o;
+  o.distribution = VM::Plane_distribution_3::slope_limited;
+  o.max_slope = 2;
+  o.seed = std::uint64_t(b.first + r);
+  o.selection_near_fraction = b.near;
+  const bool memory = b.jobs == 1;
+  double rss0 = 0;
+  if(memory) { release_memory(); mdcs_bench::reset_peak_rss(); rss0 = mdcs_bench::current_rss_mib(); }
+  double t0 = mdcs_bench::now_seconds();
+  {
+    const VM::Plane_arrangement_3 A(VM::surface_planes_3(P, std::size_t(b.planes_global), o));
+    const VM::Minimal_surface_3 s = VM::minimize_surface_functional_3(A, P, G);
+    out.global_cells = A.number_of_cells();
+    out.global_discrete = s.energy;
+    out.global_relaxed = VM::relax_surface_3(P, G, s, ro).energy;
+  }
+  out.global_seconds = mdcs_bench::now_seconds() - t0;
+  if(memory) { out.global_peak = mdcs_bench::peak_rss_mib() - rss0; release_memory(); mdcs_bench::reset_peak_rss();
+               rss0 = mdcs_bench::current_rss_mib(); }
+  t0 = mdcs_bench::now_seconds();
+  const VM::Plane_selection_result_3 sel = VM::select_planes_3(P, G, std::size_t(b.planes_select), b.rounds, o);
+  out.selection_cells = sel.cells.back();
+  out.selection_discrete = sel.surface.energy;
+  // Relax every distinct round optimum (optima of different rounds may lie in different basins) and keep the best;
+  // also record what relaxing the final (best discrete) optimum alone gives.
+  std::vector<double> seen;
+  out.selection_relaxed = std::numeric_limits<double>::infinity();
+  for(std::size_t i = 0; i < sel.surfaces.size(); ++i) {
+    const double d = sel.surfaces[i].energy;
+    if(std::find(seen.begin(), seen.end(), d) != seen.end()) continue;
+    seen.push_back(d);
+    const double e = VM::relax_surface_3(P, G, sel.surfaces[i], ro).energy;
+    ++out.relaxed_rounds;
+    if(d == sel.surface.energy) out.selection_final_relaxed = e;
+    if(e < out.selection_relaxed) { out.selection_relaxed = e; out.selection_best_round = int(i); }
+  }
+  out.selection_seconds = mdcs_bench::now_seconds() - t0;
+  if(memory) out.selection_peak = mdcs_bench::peak_rss_mib() - rss0;
+  return out;
+}
+
+// Runs f(i) for i in [0, n) on `jobs` threads.
+template <class F>
+void parallel_for(int n, int jobs, const F& f)
+{
+  if(jobs <= 1) { for(int i = 0; i < n; ++i) f(i); return; }
+  std::atomic<int> next(0);
+  std::vector<std::thread> pool;
+  for(int j = 0; j < jobs; ++j)
+    pool.emplace_back([&] { for(int i = next++; i < n; i = next++) f(i); });
+  for(std::thread& t : pool) t.join();
+}
+
+void part_blobs(bool quick, const std::string& prefix, Blob_settings b)
 {
   VM::Surface_problem_3 P;
   P.boundary_segments_per_side = 1;
@@ -248,91 +339,91 @@ void part_blobs(bool quick, const std::string& prefix)
   P.upper_boundary = [](double, double) { return 1.0; };
   const int m = 9, k = 4;
   const VM::Density_weighted_area_functional_3 G = VM::random_blob_functional_3(P, m, k, 0.08, -1.5, 5);
+  if(quick) { b.runs = (std::min)(b.runs, 2); b.starts = (std::min)(b.starts, 20); b.rounds = (std::min)(b.rounds, 4);
+              b.planes_global = (std::min)(b.planes_global, 100L); b.planes_select = (std::min)(b.planes_select, 80L); }
   std::printf("\n== 3. Blob problem (thesis Table 2.3): density-weighted area, D = exp(sum of %d wells), %d columns x %d "
               "wells (about %.0f local minima), boundary free in [0, 1].\n   Local descent: L-BFGS on 20^2 then 40^2 "
               "from a random smooth start (bilinear on a random 5 x 5 grid). Every global result is relaxed the same "
-              "way.\n\n", m * k, m, k, std::pow(k + 1.0, m));
+              "way;\n   plane selection (%ld planes x %d rounds, near fraction %g) relaxes every distinct round optimum and keeps "
+              "the best. Seeds %d..%d, %d thread(s)%s.\n\n", m * k, m, k, std::pow(k + 1.0, m), b.planes_select, b.rounds, b.near,
+              b.first, b.first + b.runs - 1, b.jobs, b.jobs > 1 ? " (no peak memory)" : "");
   VM::Surface_relaxation_options_3 ro;
   ro.grids = {20, 40};
-  mdcs_bench::Table table({"method", "run", "planes", "cells", "discrete_energy", "relaxed_energy", "seconds",
-                           "peak_MiB"});
-  std::vector<double> local;
+  // The random starts are drawn first, in order, so that the result does not depend on the number of threads.
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> U(0, 1);
-  const int starts = quick ? 20 : 100;
-  double t_local = 0;
-  for(int s = 0; s < starts; ++s) {
-    double c[5][5];
-    for(auto& row : c)
-      for(auto& v : row) v = U(rng);
+  std::vector<std::array<double, 25>> starts(std::size_t(b.starts));
+  for(auto& c : starts)
+    for(double& v : c) v = U(rng);
+  std::vector<double> local(starts.size()), local_seconds(starts.size());
+  parallel_for(b.starts, b.jobs, [&](int s) {
+    const std::array<double, 25>& c = starts[std::size_t(s)];
     auto init = [&](double x, double y) {
       const double u = x * 4, v = y * 4;
       const int i = std::min(3, int(u)), j = std::min(3, int(v));
-      const double a = u - i, b = v - j;
-      return (1 - a) * (1 - b) * c[i][j] + a * (1 - b) * c[i + 1][j] + (1 - a) * b * c[i][j + 1] + a * b * c[i + 1][j + 1];
+      const double a = u - i, e = v - j;
+      return (1 - a) * (1 - e) * c[5 * i + j] + a * (1 - e) * c[5 * (i + 1) + j] + (1 - a) * e * c[5 * i + j + 1] +
+             a * e * c[5 * (i + 1) + j + 1];
     };
     const double t0 = mdcs_bench::now_seconds();
-    local.push_back(VM::relax_surface_3(P, G, init, ro).energy);
-    t_local += mdcs_bench::now_seconds() - t0;
+    local[std::size_t(s)] = VM::relax_surface_3(P, G, init, ro).energy;
+    local_seconds[std::size_t(s)] = mdcs_bench::now_seconds() - t0;
+  });
+  std::vector<Blob_run> runs(std::size_t(b.runs));
+  parallel_for(b.runs, b.jobs, [&](int r) { runs[std::size_t(r)] = blob_run(P, G, b, r, ro); });
+
+  double t_local = 0;
+  for(double t : local_seconds) t_local += t;
+  const double best_local = local.empty() ? std::numeric_limits<double>::infinity()
+                                          : *std::min_element(local.begin(), local.end());
+  std::vector<double> global, selection, selection_final;
+  for(const Blob_run& x : runs) {
+    global.push_back(x.global_relaxed);
+    selection.push_back(x.selection_relaxed);
+    selection_final.push_back(x.selection_final_relaxed);
   }
-  const double best_local = *std::min_element(local.begin(), local.end());
-  table.add_row({"local descent (random start)", std::to_string(starts) + " runs", "-", "-", "-",
-                 fmt(best_local, "%.8g") + " (best)", fmt(t_local / starts) + " per run", "-"});
-  std::vector<double> global, selection;
-  // Plane selection with its default options (every dropped plane redrawn through the whole box), 160 planes and
-  // 6 rounds. Whether a run reaches the best basin is a matter of luck at these sizes: 120 x 5 reached it in 2 of
-  // 4 runs, 120 x 10 in 3 of 4, 160 x 6 in 1 of 4 (doc/Variational_minimization/minimal_surfaces_3.md).
-  const long n_global = quick ? 100 : 200, n_select = quick ? 80 : 160;
-  const int selection_rounds = quick ? 4 : 6;
-  const int runs = quick ? 2 : 4;
-  for(int r = 0; r < runs; ++r) {
-    VM::Surface_plane_options_3 o;
-    o.distribution = VM::Plane_distribution_3::slope_limited;
-    o.max_slope = 2;
-    o.seed = std::uint64_t(100 + r);
-    release_memory();
-    mdcs_bench::reset_peak_rss();
-    double rss0 = mdcs_bench::current_rss_mib();
-    double t0 = mdcs_bench::now_seconds();
-    {
-      const VM::Plane_arrangement_3 A(VM::surface_planes_3(P, std::size_t(n_global), o));
-      const auto w = VM::surface_facet_weights_3(A, P, G);
-      const VM::Minimal_surface_3 s = VM::minimize_surface_functional_3(A, w, P);
-      const double e = VM::relax_surface_3(P, G, s, ro).energy;
-      global.push_back(e);
-      table.add_row({"global (one solve)", std::to_string(r), std::to_string(n_global), std::to_string(A.number_of_cells()),
-                     fmt(s.energy, "%.8g"), fmt(e, "%.8g"), fmt(mdcs_bench::now_seconds() - t0),
-                     fmt(mdcs_bench::peak_rss_mib() - rss0)});
-    }
-    release_memory();
-    mdcs_bench::reset_peak_rss();
-    rss0 = mdcs_bench::current_rss_mib();
-    t0 = mdcs_bench::now_seconds();
-    const VM::Plane_selection_result_3 sel = VM::select_planes_3(P, G, std::size_t(n_select), selection_rounds, o);
-    const double e = VM::relax_surface_3(P, G, sel.surface, ro).energy;
-    selection.push_back(e);
-    table.add_row({"plane selection x" + std::to_string(selection_rounds), std::to_string(r), std::to_string(n_select), std::to_string(sel.cells.back()),
-                   fmt(sel.surface.energy, "%.8g"), fmt(e, "%.8g"), fmt(mdcs_bench::now_seconds() - t0),
-                   fmt(mdcs_bench::peak_rss_mib() - rss0)});
-  }
-  table.print();
-  table.write_csv(prefix + "_blobs.csv");
   double best = best_local;
   for(double e : global) best = std::min(best, e);
   for(double e : selection) best = std::min(best, e);
+  auto reaches = [&](double e) { return e <= best * (1 + 1e-4); };
   auto hits = [&](const std::vector<double>& v) {
     std::size_t c = 0;
-    for(double e : v) c += (e <= best * (1 + 1e-4)) ? 1 : 0;
+    for(double e : v) c += reaches(e) ? 1 : 0;
     return c;
   };
+  mdcs_bench::Table table({"method", "run", "seed", "planes", "cells", "discrete_energy", "relaxed_energy",
+                           "relaxed_final_only", "best_round", "reaches_best", "seconds", "peak_MiB"});
+  if(!local.empty())
+    table.add_row({"local descent (random start)", std::to_string(local.size()) + " runs", "-", "-", "-", "-",
+                   fmt(best_local, "%.8g") + " (best)", "-", "-", std::to_string(hits(local)) + "/" +
+                   std::to_string(local.size()), fmt(t_local / double(local.size())) + " per run", "-"});
+  for(std::size_t r = 0; r < runs.size(); ++r) {
+    const Blob_run& x = runs[r];
+    const std::string seed = std::to_string(b.first + int(r));
+    table.add_row({"global (one solve)", std::to_string(r), seed, std::to_string(b.planes_global),
+                   std::to_string(x.global_cells), fmt(x.global_discrete, "%.8g"), fmt(x.global_relaxed, "%.8g"), "-",
+                   "-", reaches(x.global_relaxed) ? "yes" : "no", fmt(x.global_seconds),
+                   x.global_peak >= 0 ? fmt(x.global_peak) : "-"});
+    table.add_row({"plane selection x" + std::to_string(b.rounds), std::to_string(r), seed,
+                   std::to_string(b.planes_select), std::to_string(x.selection_cells), fmt(x.selection_discrete, "%.8g"),
+                   fmt(x.selection_relaxed, "%.8g"), fmt(x.selection_final_relaxed, "%.8g"),
+                   std::to_string(x.selection_best_round) + " (" + std::to_string(x.relaxed_rounds) + " relaxed)",
+                   reaches(x.selection_relaxed) ? "yes" : "no", fmt(x.selection_seconds),
+                   x.selection_peak >= 0 ? fmt(x.selection_peak) : "-"});
+  }
+  table.print();
+  table.write_csv(prefix + "_blobs.csv");
   std::printf("\nbest energy of any method %.8g; runs within 1e-4 of it: local %zu / %zu, global %zu / %zu, plane "
-              "selection %zu / %zu\n", best, hits(local), local.size(), hits(global), global.size(), hits(selection),
-              selection.size());
-  std::sort(local.begin(), local.end());
-  std::printf("local descent energies: min %.6g, median %.6g, max %.6g\n", local.front(), local[local.size() / 2],
-              local.back());
+              "selection (best relaxed round) %zu / %zu, plane selection (final optimum relaxed only) %zu / %zu\n",
+              best, hits(local), local.size(), hits(global), global.size(), hits(selection), selection.size(),
+              hits(selection_final), selection_final.size());
+  if(local.empty() || runs.empty()) return;
+  std::vector<double> sorted = local;
+  std::sort(sorted.begin(), sorted.end());
+  std::printf("local descent energies: min %.6g, median %.6g, max %.6g\n", sorted.front(), sorted[sorted.size() / 2],
+              sorted.back());
   // The energy histogram (thesis Table 2.3 as counts per energy bin), relaxed energies of every method.
-  const double lo = best, hi = std::max({local.back(), *std::max_element(global.begin(), global.end()),
+  const double lo = best, hi = std::max({sorted.back(), *std::max_element(global.begin(), global.end()),
                                          *std::max_element(selection.begin(), selection.end())});
   const int bins = 12;
   const double width = (hi - lo) / bins > 0 ? (hi - lo) / bins : 1e-9;
@@ -343,13 +434,13 @@ void part_blobs(bool quick, const std::string& prefix)
   for(double e : selection) ++counts[bin_of(e)][2];
   mdcs_bench::Table histogram({"energy_from", "energy_to", "local_descent", "global_one_solve", "plane_selection"});
   std::printf("\nenergy histogram (relaxed energies; the first bin starts at the best energy):\n");
-  for(int b = 0; b < bins; ++b) {
-    const double e0 = lo + b * width, e1 = lo + (b + 1) * width;
-    histogram.add_row({fmt(e0, "%.5f"), fmt(e1, "%.5f"), std::to_string(counts[b][0]), std::to_string(counts[b][1]),
-                       std::to_string(counts[b][2])});
-    std::printf("  [%.5f, %.5f) local %-40s global %-4s selection %s\n", e0, e1,
-                std::string(std::size_t(counts[b][0]), '#').c_str(), std::string(std::size_t(counts[b][1]), '#').c_str(),
-                std::string(std::size_t(counts[b][2]), '#').c_str());
+  for(int i = 0; i < bins; ++i) {
+    const double e0 = lo + i * width, e1 = lo + (i + 1) * width;
+    histogram.add_row({fmt(e0, "%.5f"), fmt(e1, "%.5f"), std::to_string(counts[i][0]), std::to_string(counts[i][1]),
+                       std::to_string(counts[i][2])});
+    std::printf("  [%.5f, %.5f) local %-40s global %-8s selection %s\n", e0, e1,
+                std::string(std::size_t(counts[i][0]), '#').c_str(), std::string(std::size_t(counts[i][1]), '#').c_str(),
+                std::string(std::size_t(counts[i][2]), '#').c_str());
   }
   histogram.write_csv(prefix + "_blobs_histogram.csv");
 }
@@ -362,6 +453,7 @@ int main(int argc, char** argv)
   int part = 0;
   double budget = 60;
   std::string prefix = "surface";
+  Blob_settings blobs;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--quick") quick = true;
@@ -369,14 +461,22 @@ int main(int argc, char** argv)
     else if(a == "--budget" && i + 1 < argc) budget = std::atof(argv[++i]);
     else if(a == "--csv-prefix" && i + 1 < argc) prefix = argv[++i];
     else if(a == "--part" && i + 1 < argc) part = std::atoi(argv[++i]);
+    else if(a == "--blob-runs" && i + 1 < argc) blobs.runs = std::atoi(argv[++i]);
+    else if(a == "--blob-first" && i + 1 < argc) blobs.first = std::atoi(argv[++i]);
+    else if(a == "--blob-starts" && i + 1 < argc) blobs.starts = std::atoi(argv[++i]);
+    else if(a == "--blob-rounds" && i + 1 < argc) blobs.rounds = std::atoi(argv[++i]);
+    else if(a == "--blob-planes" && i + 1 < argc) blobs.planes_select = std::atol(argv[++i]);
+    else if(a == "--blob-near" && i + 1 < argc) blobs.near = std::atof(argv[++i]);
+    else if(a == "--jobs" && i + 1 < argc) blobs.jobs = std::max(1, std::atoi(argv[++i]));
     else {
       std::fprintf(stderr, "usage: bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3] "
-                           "[--csv-prefix PATH]\n");
+                           "[--csv-prefix PATH]\n       [--blob-runs N] [--blob-first SEED] [--blob-starts N] "
+                           "[--blob-rounds R] [--blob-planes N] [--blob-near F] [--jobs J]\n");
       return 2;
     }
   }
   if(part == 0 || part == 1) part_table22(quick, large, budget, prefix);
   if(part == 0 || part == 2) part_scherk(quick, prefix);
-  if(part == 0 || part == 3) part_blobs(quick, prefix);
+  if(part == 0 || part == 3) part_blobs(quick, prefix, blobs);
   return 0;
 }

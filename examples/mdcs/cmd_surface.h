@@ -48,7 +48,10 @@ inline const char* surface_usage()
     "                      wavy rim) | blobs (area weighted by a density with wells: many local minima, boundary\n"
     "                      free in [0,1]) | scherk (area, f = ln(cos y / cos x) on [-1.2,1.2]^2; exact area known)\n"
     "  --planes N          planes per arrangement (default 150)\n"
-    "  --segments S        boundary segments per side of the domain (default 4)\n"
+    "  --segments S        boundary segments per side (per polygon edge) of the domain (default 4)\n"
+    "  --domain P          a polygonal domain instead of the problem's rectangle: \"x0,y0;x1,y1;...\" (a simple\n"
+    "                      polygon; vertices rounded to 1/256 of its bounding box) or L (an L inside the rectangle);\n"
+    "                      not with --relax or --refine\n"
     "  --distribution D    slope (slope-limited, default) | isotropic\n"
     "  --max-slope S       slope bound of slope-limited planes (default 3)\n"
     "  --pencil-fraction F share of the planes through the boundary segments (default 0.2)\n"
@@ -66,6 +69,7 @@ inline const char* surface_usage()
 struct Surface_settings
 {
   std::string problem = "saddle";
+  std::string domain;
   long planes = 150;
   long segments = 4;
   std::string distribution = "slope";
@@ -89,7 +93,7 @@ struct Surface_run
   bool has_relaxed = false;
   std::vector<double> selection_energies;
   std::vector<double> refine_energies;
-  std::size_t refine_below = 0, refine_above = 0;
+  std::size_t refine_below = 0, refine_above = 0, refine_nodes = 0;
   double exact = NAN;
   std::size_t cells = 0, facets = 0, vertices = 0, pencils = 0;
   double seconds_build = 0, seconds_weights = 0, seconds_cut = 0, seconds_relax = 0, seconds_total = 0;
@@ -149,38 +153,33 @@ inline void write_surface_svg(const std::string& path, const VM3::Minimal_surfac
   out << "<svg xmlns='http://www.w3.org/2000/svg' width='800' height='" << 700 + 18 * caption.size()
       << "' viewBox='0 0 800 " << 700 + 18 * caption.size() << "'>\n<rect width='100%' height='100%' fill='white'/>\n";
   out << "<text x='20' y='28' font-family='sans-serif' font-size='18'>" << title << "</text>\n";
-  // The box's floor outline, then the surface, then the boundary curve.
+  // The domain's floor outline, then the surface, then the boundary curve.
+  std::vector<std::array<double, 2>> outline = p.domain_polygon;
+  if(!p.is_polygonal())
+    outline = {{{p.domain.xmin(), p.domain.ymin()}}, {{p.domain.xmax(), p.domain.ymin()}},
+               {{p.domain.xmax(), p.domain.ymax()}}, {{p.domain.xmin(), p.domain.ymax()}}};
   {
-    const std::array<double, 3> corners[4] = {{{p.domain.xmin(), p.domain.ymin(), p.zmin}},
-                                              {{p.domain.xmax(), p.domain.ymin(), p.zmin}},
-                                              {{p.domain.xmax(), p.domain.ymax(), p.zmin}},
-                                              {{p.domain.xmin(), p.domain.ymax(), p.zmin}}};
     out << "<polygon fill='none' stroke='#bbb' stroke-dasharray='4,3' points='";
-    for(const auto& c : corners) {
+    for(const auto& c : outline) {
       double u, v, d;
-      project(c, u, v, d);
+      project({{c[0], c[1], p.zmin}}, u, v, d);
       out << u << ',' << v << ' ';
     }
     out << "'/>\n";
   }
   for(const Tri& t : tris) out << t.svg;
-  {
+  if(!p.is_relaxed()) {
     out << "<polyline fill='none' stroke='#d62728' stroke-width='2' points='";
-    const int m = 400;
-    for(int i = 0; i <= m; ++i) {
-      const double t = 4.0 * i / m;
-      const int side = std::min(3, int(t));
-      const double f = t - side;
-      double x, y;
-      if(side == 0) { x = p.domain.xmin() + f * sx; y = p.domain.ymin(); }
-      else if(side == 1) { x = p.domain.xmax(); y = p.domain.ymin() + f * sy; }
-      else if(side == 2) { x = p.domain.xmax() - f * sx; y = p.domain.ymax(); }
-      else { x = p.domain.xmin(); y = p.domain.ymax() - f * sy; }
-      const double z = p.is_relaxed() ? p.zmin : p.lower_boundary(x, y);
-      if(p.is_relaxed()) break;
-      double u, v, d;
-      project({{x, y, z}}, u, v, d);
-      out << u << ',' << v << ' ';
+    const int m = 100;
+    for(std::size_t e = 0; e <= outline.size(); ++e) {
+      const auto& a = outline[e % outline.size()];
+      const auto& b = outline[(e + 1) % outline.size()];
+      for(int i = 0; i < (e == outline.size() ? 1 : m); ++i) {
+        const double f = double(i) / m, x = a[0] + f * (b[0] - a[0]), y = a[1] + f * (b[1] - a[1]);
+        double u, v, d;
+        project({{x, y, p.lower_boundary(x, y)}}, u, v, d);
+        out << u << ',' << v << ' ';
+      }
     }
     out << "'/>\n";
   }
@@ -195,6 +194,8 @@ inline Surface_settings parse_surface_settings(const Options& o)
   s.problem = o.text("problem", s.problem);
   if(s.problem != "saddle" && s.problem != "membrane" && s.problem != "blobs" && s.problem != "scherk")
     throw Usage_error("--problem must be saddle, membrane, blobs or scherk");
+  s.domain = o.text("domain", "");
+  if(!s.domain.empty() && s.problem == "blobs") throw Usage_error("--domain is not available for --problem blobs");
   s.planes = o.integer("planes", s.planes, 1);
   s.segments = o.integer("segments", s.segments, 1);
   if(s.segments > 256) throw Usage_error("--segments must be <= 256");
@@ -210,6 +211,8 @@ inline Surface_settings parse_surface_settings(const Options& o)
   if(s.refine > 0 && s.plane_selection > 1) throw Usage_error("--refine and --plane-selection exclude each other");
   s.relax = o.has("relax");
   o.text("relax", "");
+  if(!s.domain.empty() && (s.relax || s.refine > 0))
+    throw Usage_error("--relax and --refine need the rectangular domain (not --domain)");
   s.engine = o.text("engine", s.engine);
   if(s.engine != "pf" && s.engine != "pr" && s.engine != "bk") throw Usage_error("--engine must be pf, pr or bk");
   s.seed = o.integer("seed", s.seed, 0);
@@ -218,6 +221,28 @@ inline Surface_settings parse_surface_settings(const Options& o)
   s.quiet = o.has("quiet");
   o.text("quiet", "");
   return s;
+}
+
+// The polygon of --domain: "x0,y0;x1,y1;..." or L (an L-shaped hexagon filling three quarters of `box`).
+inline std::vector<std::array<double, 2>> parse_surface_domain(const std::string& text, const CGAL::Bbox_2& box)
+{
+  if(text == "L") {
+    const double x0 = box.xmin(), y0 = box.ymin(), x1 = box.xmax(), y1 = box.ymax();
+    const double xm = 0.5 * (x0 + x1), ym = 0.5 * (y0 + y1);
+    return {{{x0, y0}}, {{x1, y0}}, {{x1, ym}}, {{xm, ym}}, {{xm, y1}}, {{x0, y1}}};
+  }
+  std::vector<std::array<double, 2>> out;
+  std::stringstream all(text);
+  std::string vertex;
+  while(std::getline(all, vertex, ';')) {
+    std::array<double, 2> v{{0, 0}};
+    std::stringstream one(vertex);
+    char comma = 0;
+    if(!(one >> v[0] >> comma >> v[1]) || comma != ',' || !(one >> std::ws).eof())
+      throw Usage_error("--domain: cannot read the vertex '" + vertex + "' (expected x,y; vertices separated by ';')");
+    out.push_back(v);
+  }
+  return out;
 }
 
 inline VM3::Surface_problem_3 surface_problem_for(const std::string& name, int segments)
@@ -260,6 +285,7 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
       run.refine_energies = r.run_energies;
       run.refine_below = r.cells_below;
       run.refine_above = r.cells_above;
+      run.refine_nodes = r.network_nodes;
       run.cells = r.cells;
       const VM3::Plane_arrangement_3 A(r.planes);
       run.facets = A.number_of_facets();
@@ -311,6 +337,10 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
   const auto t_start = std::chrono::steady_clock::now();
   Surface_run run;
   run.problem = surface_problem_for(s.problem, int(s.segments));
+  if(!s.domain.empty()) {
+    run.problem.set_domain_polygon(parse_surface_domain(s.domain, run.problem.domain));
+    run.problem.validate(); // a bad polygon: std::invalid_argument with the reason
+  }
   std::string functional;
   if(s.problem == "membrane") {
     VM3::Membrane_functional_3 G;
@@ -325,7 +355,7 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
   } else {
     functional = "area";
     run_surface_with(s, VM3::Area_functional_3(), run, progress);
-    if(s.problem == "scherk") run.exact = VM3::scherk_surface_area(1.2, 80);
+    if(s.problem == "scherk" && s.domain.empty()) run.exact = VM3::scherk_surface_area(1.2, 80);
   }
   run.seconds_total = seconds_since(t_start);
   const std::filesystem::path folder = prepare_output_folder(s.output);
@@ -336,6 +366,7 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
       << (s.distribution == "slope" ? "slope-limited |slope| <= " + (std::ostringstream() << s.max_slope).str()
                                     : std::string("isotropic"))
       << ", seed " << s.seed << ")\n"
+      << "domain            " << (run.problem.is_polygonal() ? "polygon with " + std::to_string(run.problem.domain_polygon.size()) + " vertices, area " + (std::ostringstream() << run.problem.domain_area()).str() : std::string("rectangle")) << "\n"
       << "complex           " << run.cells << " cells, " << run.facets << " facets, " << run.vertices << " vertices\n";
   if(!run.surface.is_feasible) {
     sum << "result            INFEASIBLE: no function on this arrangement meets the boundary condition\n";
@@ -358,8 +389,8 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
   if(!run.refine_energies.empty()) {
     sum << "refinement        run energies";
     for(double e : run.refine_energies) sum << ' ' << e;
-    sum << "; refined arrangement: " << run.refine_below << " cells tied below the envelope, " << run.refine_above
-        << " above\n";
+    sum << "; refined arrangement: " << run.refine_below << " cells below the envelope merged into the source, "
+        << run.refine_above << " above into the sink, " << run.refine_nodes << " cells left in the network\n";
   }
   if(std::isfinite(run.exact))
     sum << "exact area        " << run.exact << " (relative error " << std::setprecision(3)
@@ -420,18 +451,21 @@ inline bool demo_surface(const std::filesystem::path& folder, bool quick, bool q
         "surface must be single-valued over the domain.\n\n"
         "| problem | planes | cells | discrete energy | cut gap | relaxed | exact | time (s) | picture |\n"
         "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
-  struct Demo { const char* problem; long planes; long selection; bool relax; };
-  const std::vector<Demo> runs = quick ? std::vector<Demo>{{"saddle", 60, 1, false}, {"scherk", 60, 1, true}}
-                                       : std::vector<Demo>{{"saddle", 120, 1, true}, {"membrane", 120, 1, false},
-                                                           {"scherk", 140, 1, true}, {"blobs", 90, 3, true}};
+  struct Demo { const char* problem; long planes; long selection; bool relax; const char* domain; };
+  const std::vector<Demo> runs = quick ? std::vector<Demo>{{"saddle", 60, 1, false, ""}, {"scherk", 60, 1, true, ""},
+                                                           {"saddle", 60, 1, false, "L"}}
+                                       : std::vector<Demo>{{"saddle", 120, 1, true, ""}, {"membrane", 120, 1, false, ""},
+                                                           {"scherk", 140, 1, true, ""}, {"blobs", 90, 3, true, ""},
+                                                           {"saddle", 120, 1, false, "L"}};
   for(const Demo& d : runs) {
     Surface_settings s;
     s.problem = d.problem;
     s.planes = d.planes;
     s.plane_selection = d.selection;
     s.relax = d.relax;
+    s.domain = d.domain;
     s.output = folder.string();
-    s.name = std::string("surface_") + d.problem;
+    s.name = std::string("surface_") + d.problem + (s.domain.empty() ? "" : "_" + s.domain);
     s.quiet = quiet;
     const Surface_run r = run_surface(s, progress);
     std::cout << "== surface " << d.problem << "\n" << r.summary << "\n";
@@ -444,7 +478,7 @@ inline bool demo_surface(const std::filesystem::path& folder, bool quick, bool q
     const double single = std::abs(r.surface.projected_area - r.problem.domain_area()) / r.problem.domain_area();
     if(gap > 1e-9 || single > 1e-9) ok = false;
     std::ostringstream row;
-    row << std::setprecision(8) << "| " << d.problem << (d.selection > 1 ? " (plane selection x" + std::to_string(d.selection) + ")" : "")
+    row << std::setprecision(8) << "| " << d.problem << (s.domain.empty() ? "" : " (" + s.domain + "-shaped domain)") << (d.selection > 1 ? " (plane selection x" + std::to_string(d.selection) + ")" : "")
         << " | " << d.planes << " | " << r.cells << " | " << r.surface.energy << " | " << std::setprecision(2) << gap
         << " | " << std::setprecision(8);
     if(r.has_relaxed) row << r.relaxed.energy;

@@ -197,6 +197,10 @@ Surface_cut_3 surface_min_cut_3(const Plane_arrangement_3& arrangement, const st
 {
   if(weights.size() != arrangement.number_of_facets())
     throw std::invalid_argument("MDCS: minimize_surface_functional_3: one weight per arrangement facet is required");
+  // A polygonal domain goes through the generic Flow_network path (with the pseudoflow engine).
+  if(problem.is_polygonal())
+    return surface_min_cut_3<CGAL::Min_cut::Pseudoflow_max_flow>(arrangement, weights, problem,
+                                                                 CGAL::Min_cut::Pseudoflow_max_flow(), progress);
   return surface_pseudoflow_cut_3(arrangement, [&](std::uint32_t f) { return weights[f]; }, problem, progress, false);
 }
 
@@ -245,7 +249,7 @@ inline Minimal_surface_3 minimize_surface_functional_3(const Plane_arrangement_3
 
   With `CGAL::Min_cut::Pseudoflow_max_flow` (the default) the weights go straight into the solver's residual
   capacities and no weight vector is kept: the weights of the surface's facets are computed again at the end.
-  This is the leanest path: besides the arrangement, 8 bytes per facet and 44 per cell (plus 1 per cell for the
+  This is the leanest path (rectangular domains; a polygonal domain gets a weight vector and the generic path): besides the arrangement, 8 bytes per facet and 44 per cell (plus 1 per cell for the
   sides). Other engines get a weight vector and the generic path. `progress` sees the stages `"weights"` and
   `"max-flow"` (and `"network"` for other engines).
   \throws std::invalid_argument if the problem is invalid or G is negative or NaN somewhere.
@@ -259,7 +263,7 @@ Minimal_surface_3 minimize_surface_functional_3(const Plane_arrangement_3& arran
   problem.validate();
   if(quadrature_level < 0 || quadrature_level > 8)
     throw std::invalid_argument("MDCS: minimize_surface_functional_3: quadrature_level must be in [0, 8]");
-  if(!std::is_same<Engine, CGAL::Min_cut::Pseudoflow_max_flow>::value) {
+  if(!std::is_same<Engine, CGAL::Min_cut::Pseudoflow_max_flow>::value || problem.is_polygonal()) {
     const std::vector<double> w = surface_facet_weights_3(arrangement, problem, G, quadrature_level, progress);
     return minimize_surface_functional_3(arrangement, w, problem, engine, progress);
   }

@@ -11,6 +11,7 @@
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/internal/surface_contracted_network_3.h>
 #include <CGAL/Variational_minimization/internal/surface_dual_network_3.h>
 #include <CGAL/Variational_minimization/internal/surface_height_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
@@ -41,6 +42,9 @@ struct Surface_refinement_result_3
   std::size_t kept_planes = 0;
   /// The refined arrangement's cells, and those tied to the source (below the envelope) or the sink (above).
   std::size_t cells = 0, cells_below = 0, cells_above = 0;
+  /// The contracted flow network that was solved: its nodes (the cells inside the widened envelope) and interior
+  /// facets (arcs between two of them).
+  std::size_t network_nodes = 0, network_facets = 0;
 };
 
 /*!
@@ -50,11 +54,12 @@ struct Surface_refinement_result_3
   first run and every plane carrying a facet of a run's optimum (so that each s_r is a union of its facets), then
   new planes through random points of the envelope widened by `margin` (world z units), with the orientations of
   `options.distribution`. Its cells lying lower than `margin` below the envelope are tied to the source, those
-  higher than `margin` above it to the sink (infinite arcs), so the cut is searched inside the envelope only.
+  higher than `margin` above it to the sink, so the cut is searched inside the envelope only: these cells are
+  contracted into the terminals (`network_nodes` and `network_facets` give the smaller network that is solved).
   Every s_r stays feasible, hence the refined energy is at most the best run's (up to the rounding of the weights;
   exactly for closed-form weights). If the runs' optima need more than `n` planes, all are kept (more than `n`).
   `progress` is called with stage `"refinement"`.
-  \throws std::invalid_argument for an invalid problem or functional, `runs < 1`, a negative or NaN margin, or a
+  \throws std::invalid_argument for an invalid problem or functional, a polygonal domain, `runs < 1`, a negative or NaN margin, or a
           run without a feasible surface.
 */
 template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine,
@@ -68,6 +73,9 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
   if(runs < 1) throw std::invalid_argument("MDCS: refine_surface_3: at least one run is needed");
   if(!(margin >= 0)) throw std::invalid_argument("MDCS: refine_surface_3: the margin must be >= 0");
   problem.validate();
+  if(problem.is_polygonal())
+    throw std::invalid_argument("MDCS: refine_surface_3: adaptive refinement needs a rectangular domain; a polygonal "
+                                "domain is not supported");
   CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "refinement", std::size_t(runs) + 1);
   Surface_refinement_result_3 result;
   std::vector<Minimal_surface_3> surfaces;
@@ -139,8 +147,9 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
   result.cells = arrangement.number_of_cells();
   const std::vector<double> w = surface_facet_weights_3(arrangement, problem, G, quadrature_level);
   CGAL::Min_cut::Flow_network<double> network = internal::surface_dual_network_3(arrangement, w, problem);
-  // Cells outside the widened envelope, by an interior point (the mean of the vertices: no s_r crosses a cell).
-  const double inf = CGAL::Min_cut::Flow_network<double>::infinity();
+  // Cells outside the widened envelope, by an interior point (the mean of the vertices: no s_r crosses a cell),
+  // are contracted into the source (label 1) or the sink (label 2).
+  std::vector<char> label(arrangement.number_of_cells(), 0);
   const double eps = margin + 1e-9 * (problem.zmax - problem.zmin);
   for(std::size_t c = 0; c < arrangement.number_of_cells(); ++c) {
     std::array<double, 3> m = {{0, 0, 0}};
@@ -152,26 +161,32 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
     const std::array<double, 3> p = problem.to_world(m);
     double lo, hi;
     envelope(p[0], p[1], lo, hi);
-    const std::uint32_t id = std::uint32_t(arrangement.number_of_facets()); // never cut (infinite)
     if(p[2] < lo - eps) {
-      network.add_source_facet(std::uint32_t(c), inf, id);
+      label[c] = 1;
       ++result.cells_below;
     } else if(p[2] > hi + eps) {
-      network.add_sink_facet(std::uint32_t(c), inf, id);
+      label[c] = 2;
       ++result.cells_above;
     }
   }
-  const auto cut = CGAL::Min_cut::solve_min_cut(network, engine);
+  internal::Contracted_network_3<double> reduced = internal::contract_terminal_nodes_3(network, label);
+  network = CGAL::Min_cut::Flow_network<double>(); // release the full network before the solve
+  result.network_nodes = reduced.network.number_of_nodes();
+  result.network_facets = reduced.network.number_of_facets();
   Minimal_surface_3& s = result.surface;
-  if(cut.is_finite) {
-    s.is_feasible = true;
-    s.solver_value = cut.value;
-    for(const auto& facet : cut.chain) {
-      if(!facet.forward || facet.id >= arrangement.number_of_facets())
-        throw std::logic_error("MDCS: internal error: a finite cut crossed a facet downwards");
-      s.facets.push_back(facet.id);
+  if(reduced.is_finite) {
+    const auto cut = CGAL::Min_cut::solve_min_cut(reduced.network, engine);
+    if(cut.is_finite) {
+      s.is_feasible = true;
+      s.solver_value = cut.value + reduced.constant;
+      for(const auto& facet : cut.chain) {
+        if(!facet.forward || facet.id >= arrangement.number_of_facets())
+          throw std::logic_error("MDCS: internal error: a finite cut crossed a facet downwards");
+        s.facets.push_back(facet.id);
+      }
+      s.facets.insert(s.facets.end(), reduced.constant_facets.begin(), reduced.constant_facets.end());
+      internal::surface_mesh_from_facets(arrangement, problem, w, s);
     }
-    internal::surface_mesh_from_facets(arrangement, problem, w, s);
   }
   reporter.finish();
   return result;

@@ -148,7 +148,7 @@ double lbfgs_on_grid(const Grid_frame_3& g, const Functional& G, std::vector<dou
   by projected L-BFGS, starting from `initial(x, y)` on the first grid and from the previous level's result
   (bilinear interpolation) on the next ones. Boundary nodes take the exact boundary data (fixed) or stay in
   [g0, g1] (relaxed); all nodes stay in [zmin, zmax]. The result is a local minimum near the start.
-  \throws std::invalid_argument if the problem is invalid, a grid has fewer than 1 square per side, or G is
+  \throws std::invalid_argument if the problem is invalid or has a polygonal domain, a grid has fewer than 1 square per side, or G is
           negative or NaN somewhere.
 */
 template <class Functional, class Initial, class Progress = CGAL::MDCS::No_progress>
@@ -157,6 +157,9 @@ Relaxed_surface_3 relax_surface_3(const Surface_problem_3& problem, const Functi
                                   Progress progress = Progress())
 {
   problem.validate();
+  if(problem.is_polygonal())
+    throw std::invalid_argument("MDCS: relax_surface_3: the relaxation needs a rectangular domain (its grids cover "
+                                "the rectangle); a polygonal domain is not supported");
   if(options.grids.empty()) throw std::invalid_argument("MDCS: relax_surface_3: no grid given");
   for(int n : options.grids)
     if(n < 1 || n > 4096) throw std::invalid_argument("MDCS: relax_surface_3: grid sizes must be in [1, 4096]");

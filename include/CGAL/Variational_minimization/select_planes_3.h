@@ -94,6 +94,9 @@ Plane_selection_result_3 select_planes_3(const Surface_problem_3& problem, const
      !(options.selection_near_spread >= 0 && std::isfinite(options.selection_near_spread)))
     throw std::invalid_argument("MDCS: select_planes_3: selection_near_fraction must be in [0, 1] and "
                                 "selection_near_spread finite and >= 0");
+  if(problem.is_polygonal() && options.selection_near_fraction > 0)
+    throw std::invalid_argument("MDCS: select_planes_3: planes near the optimum (selection_near_fraction > 0) need a "
+                                "rectangular domain");
   CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "plane selection", std::size_t(iterations));
   const std::size_t pencils = surface_pencil_count_3(problem, n, options);
   std::vector<Lattice_plane_3> planes = surface_planes_3(problem, n, options);

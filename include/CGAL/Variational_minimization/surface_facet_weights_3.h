@@ -10,6 +10,7 @@
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
+#include <CGAL/Variational_minimization/internal/surface_domain_cells_3.h>
 
 #include <algorithm>
 #include <array>
@@ -143,7 +144,8 @@ double surface_facet_weight_3(const Plane_arrangement_3& arrangement, const Surf
   \brief The weight of every facet of `arrangement` for the functional `G` (a model of `SurfaceFunctional_3`).
   Vertical facets inside the box weigh +infinity (they cannot belong to a function), facets on the side walls 0
   (they never enter the cut), facets on the floor and the ceiling the integral over them (a function may run
-  along them). `progress` is called with stage `"weights"`.
+  along them). On a polygonal domain, facets with no cell over Ω weigh 0 (G is not evaluated there).
+  `progress` is called with stage `"weights"`.
   \throws std::invalid_argument if the problem is invalid or G is negative or NaN somewhere.
 */
 template <class Functional, class Progress = CGAL::MDCS::No_progress>
@@ -157,8 +159,18 @@ std::vector<double> surface_facet_weights_3(const Plane_arrangement_3& arrangeme
   const std::size_t n = arrangement.number_of_facets();
   std::vector<double> w(n, 0.0);
   CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "weights", n);
+  // A polygonal domain: facets of cells outside Ω only get weight 0 (G is not evaluated outside Ω).
+  const bool polygonal = problem.is_polygonal();
+  const std::vector<char> inside = polygonal ? internal::surface_domain_cells_3(arrangement, problem)
+                                             : std::vector<char>();
   for(std::size_t i = 0; i < n; ++i) {
     reporter(i);
+    if(polygonal) {
+      const Plane_arrangement_3::Facet& F = arrangement.facet(Plane_arrangement_3::Facet_index(i));
+      const bool in = (F.negative_cell != Plane_arrangement_3::null_index && inside[F.negative_cell]) ||
+                      (F.positive_cell != Plane_arrangement_3::null_index && inside[F.positive_cell]);
+      if(!in) continue;
+    }
     w[i] = surface_facet_weight_3(arrangement, problem, G, Plane_arrangement_3::Facet_index(i), quadrature_level);
   }
   reporter.finish();

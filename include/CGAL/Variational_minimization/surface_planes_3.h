@@ -101,6 +101,32 @@ inline Lattice_plane_3 sloped_pencil_plane(const std::array<std::int64_t, 3>& p,
   return reduced_plane(a, b, c, -(a * p[0] + b * p[1] + c * p[2]));
 }
 
+// A plane through the boundary segment p-q of a polygonal domain (counter-clockwise, X and Y multiples of 2^8) whose
+// slope across the segment, towards the inside, is about `world_slope`: normal (q - p) x (n_in + k e_z), n_in the
+// inward normal scaled to a largest component of 64, |k| <= 447 (so that |a|, |b| <= 2^25).
+inline Lattice_plane_3 polygon_pencil_plane(const std::array<std::int64_t, 3>& p, const std::array<std::int64_t, 3>& q,
+                                            double world_slope, const Surface_problem_3& problem)
+{
+  const double L = double(Plane_arrangement_3::lattice_size);
+  const std::int64_t u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  const double m = double((std::max)(std::llabs(u[0]), std::llabs(u[1])));
+  const std::int64_t nx = std::llround(-64.0 * double(u[1]) / m), ny = std::llround(64.0 * double(u[0]) / m);
+  const double sx = (problem.domain.xmax() - problem.domain.xmin()) / L,
+               sy = (problem.domain.ymax() - problem.domain.ymin()) / L, sz = (problem.zmax - problem.zmin) / L;
+  const double run = std::sqrt(double(nx * nx) * sx * sx + double(ny * ny) * sy * sy); // world length of n_in
+  const std::int64_t k = (std::max)(std::int64_t(-447), (std::min)(std::int64_t(447), std::int64_t(std::llround(world_slope * run / sz))));
+  const std::int64_t v[3] = {nx, ny, k};
+  const std::int64_t a = u[1] * v[2] - u[2] * v[1], b = u[2] * v[0] - u[0] * v[2], c = u[0] * v[1] - u[1] * v[0];
+  return reduced_plane(a, b, c, -(a * p[0] + b * p[1] + c * p[2]));
+}
+
+// The vertical plane through the lattice points a and b.
+inline Lattice_plane_3 vertical_plane_through(const std::array<std::int64_t, 2>& a, const std::array<std::int64_t, 2>& b)
+{
+  const std::int64_t pa = b[1] - a[1], pb = a[0] - b[0];
+  return reduced_plane(pa, pb, 0, -(pa * a[0] + pb * a[1]));
+}
+
 // The plane through the boundary segment p-q and the apex c (X, Y multiples of 2^8: see Surface_problem_3).
 inline Lattice_plane_3 cone_plane(const std::array<std::int64_t, 3>& p, const std::array<std::int64_t, 3>& q,
                                   const std::array<std::int64_t, 3>& c)
@@ -120,9 +146,75 @@ inline Lattice_plane_3 cone_plane(const std::array<std::int64_t, 3>& p, const st
 inline std::size_t surface_pencil_count_3(const Surface_problem_3& problem, std::size_t n,
                                           const Surface_plane_options_3& options)
 {
+  if(problem.is_polygonal()) {
+    // The vertical planes of the edges, then (per boundary curve) one plane per boundary segment.
+    const std::size_t edges = problem.lattice_polygon().size();
+    const std::size_t segments = problem.polygon_samples().size() * (problem.is_relaxed() ? 2 : 1);
+    return (std::max)(edges + segments, std::size_t(std::ceil(options.pencil_fraction * double(n))));
+  }
   const std::size_t segments = std::size_t(4 * problem.boundary_segments_per_side) * (problem.is_relaxed() ? 2 : 1);
   return (std::max)(segments, std::size_t(std::ceil(options.pencil_fraction * double(n))));
 }
+
+namespace internal {
+
+// The random (non-pencil) planes of surface_planes_3(), appended until `planes` has n.
+template <class Rng>
+void add_random_surface_planes_3(const Surface_problem_3& problem, std::size_t n, const Surface_plane_options_3& options,
+                                 Rng& rng, std::vector<Lattice_plane_3>& planes)
+{
+  const std::int64_t L = Plane_arrangement_3::lattice_size;
+  std::uniform_real_distribution<double> U(0, double(L));
+  std::normal_distribution<double> N;
+  std::uniform_real_distribution<double> S(-options.max_slope, options.max_slope);
+  const double sx = (problem.domain.xmax() - problem.domain.xmin()) / double(L),
+               sy = (problem.domain.ymax() - problem.domain.ymin()) / double(L),
+               sz = (problem.zmax - problem.zmin) / double(L);
+  while(planes.size() < n) {
+    const std::array<double, 3> q = {{U(rng), U(rng), U(rng)}};
+    std::array<double, 3> normal;
+    if(options.distribution == Plane_distribution_3::isotropic)
+      normal = {{N(rng), N(rng), N(rng)}};
+    else
+      normal = {{-S(rng) * sx / sz, -S(rng) * sy / sz, 1.0}};
+    if(!(std::abs(normal[0]) + std::abs(normal[1]) + std::abs(normal[2]) > 1e-12)) continue;
+    planes.push_back(plane_through(normal, q));
+  }
+}
+
+// surface_planes_3() on a polygonal domain: the vertical planes of the edges; the planes of a triangulation of the
+// (lower) boundary loop, which hold a piecewise linear function meeting the boundary condition (the boundary cone
+// of a rectangle needs a domain star-shaped from its apex), plus pencils up to one plane per boundary segment;
+// then more pencils and the random planes.
+template <class Rng>
+std::vector<Lattice_plane_3> polygon_surface_planes_3(const Surface_problem_3& problem, std::size_t n,
+                                                      const Surface_plane_options_3& options, Rng& rng)
+{
+  const std::vector<std::array<std::int64_t, 2>> poly = problem.lattice_polygon();
+  std::vector<Lattice_plane_3> planes;
+  for(std::size_t e = 0; e < poly.size(); ++e) planes.push_back(vertical_plane_through(poly[e], poly[(e + 1) % poly.size()]));
+  const std::size_t edges = planes.size();
+  std::vector<std::array<std::array<std::int64_t, 3>, 2>> segments;
+  for(int upper = 0; upper < (problem.is_relaxed() ? 2 : 1); ++upper) {
+    const auto loop = problem.boundary_loop(upper != 0);
+    for(std::size_t i = 0; i < loop.size(); ++i) segments.push_back({{loop[i], loop[(i + 1) % loop.size()]}});
+    if(upper == 0)
+      for(const auto& t : lattice_polygon_triangulation(loop)) planes.push_back(cone_plane(loop[t[0]], loop[t[1]], loop[t[2]]));
+  }
+  const std::size_t pencils = surface_pencil_count_3(problem, n, options);
+  std::uniform_real_distribution<double> slope(-options.max_slope, options.max_slope);
+  for(std::size_t i = planes.size(); i < pencils; ++i) {
+    const auto& s = segments[(i - edges) % segments.size()];
+    if(options.distribution == Plane_distribution_3::slope_limited)
+      planes.push_back(polygon_pencil_plane(s[0], s[1], slope(rng), problem));
+    else
+      planes.push_back(pencil_plane(s[0], s[1], rng));
+  }
+  add_random_surface_planes_3(problem, n, options, rng, planes);
+  return planes;
+}
+
+} // namespace internal
 
 /*!
   \ingroup PkgVariationalMinimizationSurfaces
@@ -133,7 +225,9 @@ inline std::size_t surface_pencil_count_3(const Surface_problem_3& problem, std:
   these planes hold the *boundary cone*, a piecewise linear function that meets the boundary condition, so that
   the discrete problem is always feasible. The other pencil planes turn about the segments at random
   (round-robin over the segments). The pencils make the boundary curve a union of arrangement edges, which the
-  cut needs.
+  cut needs. On a polygonal domain the list starts with the vertical planes through the polygon's edges, and the
+  boundary cone is replaced by the planes of a triangulation of the boundary loop (ear clipping; any simple
+  polygon), completed by pencils to one plane per segment (`surface_pencil_count_3()` counts all of these).
   \throws std::invalid_argument if the problem is invalid.
 */
 inline std::vector<Lattice_plane_3> surface_planes_3(const Surface_problem_3& problem, std::size_t n,
@@ -145,6 +239,7 @@ inline std::vector<Lattice_plane_3> surface_planes_3(const Surface_problem_3& pr
   if(options.distribution == Plane_distribution_3::slope_limited && !(options.max_slope > 0))
     throw std::invalid_argument("MDCS: surface_planes_3: max_slope must be > 0");
   std::mt19937_64 rng(options.seed);
+  if(problem.is_polygonal()) return internal::polygon_surface_planes_3(problem, n, options, rng);
   const std::int64_t L = Plane_arrangement_3::lattice_size;
   std::vector<std::array<std::array<std::int64_t, 3>, 2>> segments;
   std::vector<Lattice_plane_3> planes;
@@ -173,22 +268,7 @@ inline std::vector<Lattice_plane_3> surface_planes_3(const Surface_problem_3& pr
     } else
       planes.push_back(internal::pencil_plane(s[0], s[1], rng));
   }
-  std::uniform_real_distribution<double> U(0, double(L));
-  std::normal_distribution<double> N;
-  std::uniform_real_distribution<double> S(-options.max_slope, options.max_slope);
-  const double sx = (problem.domain.xmax() - problem.domain.xmin()) / double(L),
-               sy = (problem.domain.ymax() - problem.domain.ymin()) / double(L),
-               sz = (problem.zmax - problem.zmin) / double(L);
-  while(planes.size() < n) {
-    const std::array<double, 3> q = {{U(rng), U(rng), U(rng)}};
-    std::array<double, 3> normal;
-    if(options.distribution == Plane_distribution_3::isotropic)
-      normal = {{N(rng), N(rng), N(rng)}};
-    else
-      normal = {{-S(rng) * sx / sz, -S(rng) * sy / sz, 1.0}};
-    if(!(std::abs(normal[0]) + std::abs(normal[1]) + std::abs(normal[2]) > 1e-12)) continue;
-    planes.push_back(internal::plane_through(normal, q));
-  }
+  internal::add_random_surface_planes_3(problem, n, options, rng, planes);
   return planes;
 }
 

@@ -8,10 +8,14 @@
 #include <CGAL/Min_cut/Flow_network.h>
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/internal/surface_domain_cells_3.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -75,6 +79,112 @@ inline int side_wall_tie_3(const Plane_arrangement_3& arrangement, Plane_arrange
   return 0;
 }
 
+// The boundary curves of a polygonal domain, per edge, as functions of the position s in [0, 1] along the edge.
+class Polygon_wall_curves_3
+{
+public:
+  explicit Polygon_wall_curves_3(const Surface_problem_3& problem)
+    : poly_(problem.lattice_polygon()), lower_(poly_.size()), upper_(poly_.size())
+  {
+    const std::vector<std::array<std::int64_t, 3>> samples = problem.polygon_samples();
+    const std::vector<std::array<std::int64_t, 3>> lo = problem.boundary_loop(false), hi = problem.boundary_loop(true);
+    for(std::size_t i = 0; i < samples.size(); ++i) {
+      const std::size_t e = std::size_t(samples[i][2]);
+      lower_[e].points.push_back({{position(e, samples[i][0], samples[i][1]), double(lo[i][2])}});
+      upper_[e].points.push_back({{position(e, samples[i][0], samples[i][1]), double(hi[i][2])}});
+      // The first sample of an edge (its first vertex) is the last point of the previous edge.
+      if(i > 0 && samples[i - 1][2] == samples[i][2]) continue;
+      const std::size_t p = (e + poly_.size() - 1) % poly_.size();
+      lower_[p].points.push_back({{1.0, double(lo[i][2])}});
+      upper_[p].points.push_back({{1.0, double(hi[i][2])}});
+    }
+    for(auto& c : lower_) std::sort(c.points.begin(), c.points.end());
+    for(auto& c : upper_) std::sort(c.points.begin(), c.points.end());
+  }
+
+  // A vertical facet between a cell over Ω and the outside: +1 below the lower curve (source), -1 above the upper
+  // curve (sink), 0 between them. Its centroid decides, against the curves of the nearest edge.
+  int tie(const Plane_arrangement_3& arrangement, Plane_arrangement_3::Facet_index f) const
+  {
+    double x = 0, y = 0, z = 0;
+    const std::size_t n = arrangement.facet_degree(f);
+    for(std::size_t k = 0; k < n; ++k) {
+      const std::array<double, 3>& p = arrangement.point(arrangement.facet_vertex(f, k));
+      x += p[0]; y += p[1]; z += p[2];
+    }
+    x /= double(n); y /= double(n); z /= double(n);
+    std::size_t best = 0;
+    double best_d = std::numeric_limits<double>::infinity(), best_s = 0;
+    for(std::size_t e = 0; e < poly_.size(); ++e) {
+      const double s = (std::max)(0.0, (std::min)(1.0, position(e, x, y)));
+      const auto& a = poly_[e];
+      const auto& b = poly_[(e + 1) % poly_.size()];
+      const double px = double(a[0]) + s * double(b[0] - a[0]) - x, py = double(a[1]) + s * double(b[1] - a[1]) - y;
+      const double d = px * px + py * py;
+      if(d < best_d) { best_d = d; best = e; best_s = s; }
+    }
+    if(z < lower_[best](best_s)) return 1;
+    if(z > upper_[best](best_s)) return -1;
+    return 0;
+  }
+
+private:
+  double position(std::size_t e, double x, double y) const
+  {
+    const auto& a = poly_[e];
+    const auto& b = poly_[(e + 1) % poly_.size()];
+    const double dx = double(b[0] - a[0]), dy = double(b[1] - a[1]);
+    return ((x - double(a[0])) * dx + (y - double(a[1])) * dy) / (dx * dx + dy * dy);
+  }
+
+  std::vector<Lattice_point_2> poly_;
+  std::vector<Wall_curve_3> lower_, upper_;
+};
+
+// A polygonal domain: cells outside Ω get no arcs; a facet between a cell over Ω and the outside (or the box) ties
+// that cell like a side wall: floor and ceiling facets with their weight, vertical facets infinitely below the
+// lower curve (source) and above the upper one (sink).
+inline CGAL::Min_cut::Flow_network<double> polygon_dual_network_3(const Plane_arrangement_3& arrangement,
+                                                                  const std::vector<double>& weights,
+                                                                  const Surface_problem_3& problem)
+{
+  typedef CGAL::Min_cut::Flow_network<double> Network;
+  typedef Plane_arrangement_3 Arr;
+  const double inf = Network::infinity();
+  const std::vector<char> inside = surface_domain_cells_3(arrangement, problem);
+  const Polygon_wall_curves_3 curves(problem);
+  Network network;
+  network.reserve(arrangement.number_of_cells(), arrangement.number_of_facets(), 0);
+  network.add_nodes(arrangement.number_of_cells());
+  for(std::size_t i = 0; i < arrangement.number_of_facets(); ++i) {
+    const Arr::Facet_index f = Arr::Facet_index(i);
+    const Arr::Facet& x = arrangement.facet(f);
+    const Network::Facet_index id = Network::Facet_index(i);
+    const bool in_n = x.negative_cell != Arr::null_index && inside[x.negative_cell];
+    const bool in_p = x.positive_cell != Arr::null_index && inside[x.positive_cell];
+    if(!in_n && !in_p) continue;
+    const Lattice_plane_3& p = arrangement.plane(x.plane);
+    if(in_n && in_p) {
+      if(p.c == 0) network.add_facet(x.negative_cell, x.positive_cell, inf, inf, id);
+      else if(p.c > 0) network.add_facet(x.negative_cell, x.positive_cell, weights[i], inf, id);
+      else network.add_facet(x.positive_cell, x.negative_cell, weights[i], inf, id);
+      continue;
+    }
+    const Arr::Cell_index cell = in_n ? x.negative_cell : x.positive_cell;
+    if(x.plane == 4) network.add_source_facet(cell, weights[i], id);
+    else if(x.plane == 5) network.add_sink_facet(cell, weights[i], id);
+    else if(p.c != 0)
+      throw std::logic_error("MDCS: internal error: a non-vertical facet between a cell over the domain and the "
+                             "outside (are the planes of the polygon's edges in the arrangement?)");
+    else {
+      const int tie = curves.tie(arrangement, f);
+      if(tie > 0) network.add_source_facet(cell, inf, id);
+      else if(tie < 0) network.add_sink_facet(cell, inf, id);
+    }
+  }
+  return network;
+}
+
 // Cells are nodes. A non-vertical facet separates the cell below from the cell above: the arc below->above costs
 // the facet weight, the reverse arc is infinite, so every finite cut is the graph of a function. Vertical facets
 // are infinite both ways. Floor facets tie their cell to the source, ceiling facets to the sink, with their weight.
@@ -84,6 +194,7 @@ inline CGAL::Min_cut::Flow_network<double> surface_dual_network_3(const Plane_ar
                                                                   const std::vector<double>& weights,
                                                                   const Surface_problem_3& problem)
 {
+  if(problem.is_polygonal()) return polygon_dual_network_3(arrangement, weights, problem);
   typedef CGAL::Min_cut::Flow_network<double> Network;
   typedef Plane_arrangement_3 Arr;
   const double inf = Network::infinity();
