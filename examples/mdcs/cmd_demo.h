@@ -34,9 +34,11 @@ inline const char* demo_usage()
     "                    generated torus without CGAL's data), checked against Surface_mesh_shortest_path;\n"
     "                    in geodesics-MESH/ folders\n"
     "  surface           minimal surfaces (BSP plane arrangement + min-cut): saddle, heavy membrane, Scherk (exact\n"
-    "                    area) and a blob density with plane selection, relaxed on an 80^2 grid\n"
+    "                    area), a saddle on an L-shaped polygonal domain, and a blob density with plane\n"
+    "                    selection, relaxed on an 80^2 grid\n"
     "  mwt               minimum weight triangulations by the triangle LP: 1000 uniform and 400 clustered points\n"
-    "                    certified, the thesis's 13-wheel (LP 18.7636 fractional, MWT 18.7989 by branch and bound)\n"
+    "                    certified (exactly, without tolerance, on random sets), the thesis's 13-wheel (LP 18.7636\n"
+    "                    fractional, MWT 18.7989 by branch and bound)\n"
     "  silhouettes       loop picking and loop mapping (min cut) on a 20k-face bunny with a 1k-face coarse mesh,\n"
     "                    12-frame rotation\n"
     "  --quick           smaller grids and meshes, fewer runs (for a fast smoke run)\n";
