@@ -7,7 +7,8 @@
 //    subdivided cube, square with a hole, CGAL's elephant) and never below the exact distance;
 //  - the mean relative error against Exact_geodesic_distances_3 stays below measured bounds;
 //  - distance limit and stop targets, Surface_mesh and Polyhedron_3 agree, degenerate input (zero-length edge,
-//    collinear triangle, needles, two components), invalid input, progress and cancellation, statistics.
+//    collinear triangle, needles, two components), invalid input, progress and cancellation, statistics;
+//  - the large-page arrays of the engine, and a reused object giving a fresh object's results bit for bit.
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/cgal_meshes.h>
@@ -23,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -737,4 +739,51 @@ TEST_CASE("flat-exact geodesics: memory modes, progress, cancellation, statistic
   CHECK(c.distance(vertex_at(100)) == 0);
   CHECK(c.distance(vertex_at(0)) == Approx(MDCS_test::dist(MDCS_test::vertex_vec3(m, vertex_at(0)),
                                                            MDCS_test::vertex_vec3(m, vertex_at(100)))).epsilon(1e-12));
+}
+
+TEST_CASE("flat-exact geodesics: the arrays of the engine (large pages, reuse of one object)", "[geodesics][flat_exact]")
+{
+  // the allocator of the large arrays: values kept through growth, large blocks aligned for huge pages
+  PG::internal::Large_vector<std::int32_t> big;
+  for(std::int32_t i = 0; i < 600000; ++i)
+    big.push_back(i);
+  big.resize(700000, -1);
+  long long sum = 0;
+  for(std::int32_t x : big)
+    sum += x;
+  CHECK(sum == 599999LL * 600000LL / 2 - 100000LL);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  CHECK(reinterpret_cast<std::uintptr_t>(big.data()) % (std::uintptr_t(2) << 20) == 0);
+#endif
+  PG::internal::Large_vector<double> small(10, 2.5);
+  small.push_back(1.0);
+  CHECK(small.size() == 11);
+  CHECK(small.front() == 2.5);
+  CHECK(small.back() == 1.0);
+
+  // one object, several runs: each equals a fresh object's run bit for bit (no state survives a recomputation)
+  const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(2, 0.15, 5));
+  std::vector<std::vector<double>> fresh;
+  for(std::size_t s : {std::size_t(0), std::size_t(37), std::size_t(0)}) {
+    Geodesics g(m);
+    g.add_source(vertex_at(s));
+    std::vector<double> d;
+    for(vertex_descriptor v : vertices(m))
+      d.push_back(g.distance(v));
+    fresh.push_back(d);
+  }
+  Geodesics reused(m);
+  std::size_t run = 0;
+  for(std::size_t s : {std::size_t(0), std::size_t(37), std::size_t(0)}) {
+    reused.clear_sources();
+    reused.add_source(vertex_at(s));
+    std::size_t i = 0, differ = 0;
+    for(vertex_descriptor v : vertices(m))
+      if(reused.distance(v) != fresh[run][i++])
+        ++differ;
+    CHECK(differ == 0);
+    ++run;
+  }
+  CHECK(fresh[0] == fresh[2]);
+  CHECK(fresh[0] != fresh[1]);
 }

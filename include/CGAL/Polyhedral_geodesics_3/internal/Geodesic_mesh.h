@@ -15,6 +15,7 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/Large_page_allocator.h>
 
 #include <boost/multiprecision/number.hpp>
 
@@ -51,6 +52,10 @@ struct Point_2_ft
   FT x, y;
 };
 
+// The arrays of the compact mesh and of the engines: std::vector with huge pages for large blocks.
+template <class T>
+using Large_vector = std::vector<T, Large_page_allocator<T>>;
+
 template <class FT>
 struct Geodesic_mesh
 {
@@ -60,17 +65,17 @@ struct Geodesic_mesh
   std::size_t number_of_faces = 0;
   std::size_t number_of_edges = 0;
 
-  std::vector<std::array<FT, 3>> points;     // per vertex
-  std::vector<Index> he_source;              // per compact halfedge (3 per face): its source vertex
-  std::vector<Index> he_twin;                // twin halfedge or -1 on the boundary
-  std::vector<Index> he_edge;                // undirected edge id
-  std::vector<FT> he_length;                 // length of the edge
-  std::vector<Point_2_ft<FT>> he_opposite;   // opposite corner in the halfedge's frame: source at (0,0),
-                                             // target at (length,0), the face on the side y >= 0
-  std::vector<Index> edge_halfedge;          // canonical halfedge of each edge (the one the edge frame uses)
-  std::vector<Index> vertex_halfedge;        // one compact halfedge whose source is the vertex, -1 if isolated
-  std::vector<char> vertex_on_boundary;
-  std::vector<FT> vertex_angle_sum;          // sum of the corner angles (as double-precision estimate in FT)
+  Large_vector<std::array<FT, 3>> points;     // per vertex
+  Large_vector<Index> he_source;              // per compact halfedge (3 per face): its source vertex
+  Large_vector<Index> he_twin;                // twin halfedge or -1 on the boundary
+  Large_vector<Index> he_edge;                // undirected edge id
+  Large_vector<FT> he_length;                 // length of the edge
+  Large_vector<Point_2_ft<FT>> he_opposite;   // opposite corner in the halfedge's frame: source at (0,0),
+                                              // target at (length,0), the face on the side y >= 0
+  Large_vector<Index> edge_halfedge;          // canonical halfedge of each edge (the one the edge frame uses)
+  Large_vector<Index> vertex_halfedge;        // one compact halfedge whose source is the vertex, -1 if isolated
+  Large_vector<char> vertex_on_boundary;
+  Large_vector<FT> vertex_angle_sum;          // sum of the corner angles (as double-precision estimate in FT)
 
   static Index face_of(Index h) { return h / 3; }
   static Index next(Index h) { return h % 3 == 2 ? h - 2 : h + 1; }
@@ -175,6 +180,7 @@ void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndex
 
   mesh.he_edge.assign(3 * nf, -1);
   mesh.edge_halfedge.clear();
+  mesh.edge_halfedge.reserve(3 * nf / 2 + 1);
   for(Index h = 0; h < Index(3 * nf); ++h) {
     if(mesh.he_edge[h] >= 0)
       continue;

@@ -65,13 +65,13 @@ public:
 
   explicit Flat_exact_field(const Mesh& mesh) : mesh_(mesh)
   {
+    build_halfedge_data();
     unreached_ = FT(std::numeric_limits<double>::max() / 16);
     if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
       epsilon_ = FT(std::numeric_limits<FT>::epsilon());
     else
       epsilon_ = FT(0);
     improvement_ = FT(16) * epsilon_;
-    build_halfedge_data();
     build_vertex_edges();
     vertex_is_pseudo_source_.assign(mesh_.number_of_vertices, 0);
     // vertices where shortest paths can bend: saddles (angle sum above 2 pi) and reflex boundary vertices
@@ -96,7 +96,6 @@ public:
     side_he_.clear();
     side_mask_.clear();
     heap_position_.assign(ne, -1);
-    edge_function_.assign(ne, Pseudo_source{false, FT(0), FT(0), FT(0), -1});
     visit_vertex_.assign(nv, 0);
     search_stamp_ = 0;
     heap_.clear();
@@ -217,6 +216,7 @@ protected:
   // ------------------------------------------------------------------------------------------------
   // Mesh helpers
 
+  // The edges around each vertex (CSR: vedge_begin_, vedge_), as edge indices.
   void build_vertex_edges()
   {
     const std::size_t nv = mesh_.number_of_vertices, ne = mesh_.number_of_edges;
@@ -233,17 +233,16 @@ protected:
     vedge_.resize(std::size_t(vedge_begin_[nv]));
     std::vector<Index> fill(vedge_begin_.begin(), vedge_begin_.end() - 1);
     for(std::size_t e = 0; e < ne; ++e) {
-      const Index h = mesh_.edge_halfedge[e], tw = he_[std::size_t(h)].twin;
+      const Index h = mesh_.edge_halfedge[e];
       const Index a = he_source(h), b = he_target(h);
-      const Incident_edge ie{Index(e), h, a, b, he_opposite_vertex(h), tw < 0 ? Index(-1) : he_opposite_vertex(tw),
-                             he_[std::size_t(h)].length};
-      vedge_[std::size_t(fill[std::size_t(a)]++)] = ie;
+      vedge_[std::size_t(fill[std::size_t(a)]++)] = Index(e);
       if(b != a)
-        vedge_[std::size_t(fill[std::size_t(b)]++)] = ie;
+        vedge_[std::size_t(fill[std::size_t(b)]++)] = Index(e);
     }
   }
 
-  // The mesh's data per halfedge, packed for the propagation (one cache line per face instead of six arrays).
+  // The mesh's data per halfedge, packed for the propagation (a face's three halfedges in 120 contiguous bytes
+  // instead of five arrays; in huge pages, so that the copy costs few page faults).
   struct Halfedge_data
   {
     Point_2_ft<FT> opposite; // the opposite corner in the halfedge's frame
@@ -254,10 +253,11 @@ protected:
   void build_halfedge_data()
   {
     const std::size_t nh = 3 * mesh_.number_of_faces;
-    he_.resize(nh);
+    he_.clear();
+    he_.reserve(nh);
     for(std::size_t h = 0; h < nh; ++h)
-      he_[h] = Halfedge_data{mesh_.he_opposite[h], mesh_.he_length[h], mesh_.he_source[h], mesh_.he_twin[h],
-                             mesh_.he_edge[h]};
+      he_.push_back(Halfedge_data{mesh_.he_opposite[h], mesh_.he_length[h], mesh_.he_source[h], mesh_.he_twin[h],
+                                  mesh_.he_edge[h]});
   }
 
   Index he_source(Index h) const { return he_[std::size_t(h)].source; }
@@ -514,30 +514,29 @@ protected:
     Index source;
     Index root;
   };
-  std::vector<Vertex_state> vs_;
-  std::vector<Index> parent_he_;            // see Parent_kind
-  std::vector<unsigned char> parent_kind_;
-  std::vector<char> vertex_is_pseudo_source_; // saddle or boundary vertex
-  std::vector<std::uint32_t> first_reached_, last_lowered_; // lowering times (clock_)
+  Large_vector<Vertex_state> vs_;
+  Large_vector<Index> parent_he_;            // see Parent_kind
+  Large_vector<unsigned char> parent_kind_;
+  Large_vector<char> vertex_is_pseudo_source_; // saddle or boundary vertex
+  Large_vector<std::uint32_t> first_reached_, last_lowered_; // lowering times (clock_)
   std::uint32_t clock_ = 0;
-  std::vector<Index> child_next_, child_prev_; // the list of the vertices updated from the same edge
-  std::vector<Index> vedge_begin_;
-  std::vector<Incident_edge> vedge_;        // the edges around each vertex
-  std::vector<Halfedge_data> he_;
+  Large_vector<Index> child_next_, child_prev_; // the list of the vertices updated from the same edge
+  Large_vector<Index> vedge_begin_;
+  Large_vector<Index> vedge_;                // the edges around each vertex
+  Large_vector<Halfedge_data> he_;          // per halfedge: he_[h].length, .opposite, .source, .twin, .edge
   // per edge
-  std::vector<Index> child_head_;           // first vertex updated from the edge
+  Large_vector<Index> child_head_;           // first vertex updated from the edge
   // side links, built with the first path query (mutable: a cache)
-  mutable std::vector<Index> side_he_;      // the halfedge of the edge in the face of its side links, -1: none
-  mutable std::vector<unsigned char> side_mask_; // its side parents: bit 0 the edge of next(side_he_), bit 1 prev
-  std::vector<Index> heap_position_;        // the edge's position in heap_, -1: not queued
-  std::vector<Pseudo_source> edge_function_; // the distance function of a queued edge (canonical frame)
+  mutable Large_vector<Index> side_he_;      // the halfedge of the edge in the face of its side links, -1: none
+  mutable Large_vector<unsigned char> side_mask_; // its side parents: bit 0 the edge of next(side_he_), bit 1 prev
+  Large_vector<Index> heap_position_;        // the edge's position in heap_, -1: not queued
   // searches
-  std::vector<std::uint32_t> visit_vertex_;
+  Large_vector<std::uint32_t> visit_vertex_;
   std::vector<Index> stack_, starts_, touched_;
   std::uint32_t search_stamp_ = 0;
   bool recording_touched_ = false;
 
-  std::vector<Heap_entry> heap_;
+  Large_vector<Heap_entry> heap_;
   std::size_t peak_heap_ = 0;
   std::vector<Vertex_source> vertex_sources_;
   std::vector<Face_source> face_sources_;

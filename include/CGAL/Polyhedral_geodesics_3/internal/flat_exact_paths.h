@@ -180,8 +180,8 @@ protected:
   {
     for(Index w = child_head_[std::size_t(x)]; w >= 0; w = child_next_[std::size_t(w)])
       for(Index k = vedge_begin_[std::size_t(w)]; k < vedge_begin_[std::size_t(w) + 1]; ++k)
-        if(vedge_[std::size_t(k)].edge != x)
-          visit(vedge_[std::size_t(k)].edge);
+        if(vedge_[std::size_t(k)] != x)
+          visit(vedge_[std::size_t(k)]);
     if(side_he_.empty())
       return;
     const Index h0 = mesh_.edge_halfedge[std::size_t(x)];

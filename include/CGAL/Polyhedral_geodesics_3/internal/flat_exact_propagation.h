@@ -160,7 +160,7 @@ public:
     stats_.windows_propagated = counters_.edges_propagated;
     stats_.stored_windows = mesh_.number_of_edges;
     note_memory();
-    std::vector<Heap_entry>().swap(heap_);
+    decltype(heap_)().swap(heap_);
     if(!progress(stage, 1.0))
       throw MDCS::Operation_cancelled(stage);
   }
@@ -186,7 +186,6 @@ private:
   using Base::child_prev_;
   using Base::clock_;
   using Base::counters_;
-  using Base::edge_function_;
   using Base::face_source_index_;
   using Base::face_sources_;
   using Base::first_reached_;
@@ -255,9 +254,9 @@ private:
   }
 
   // (Re)queues an edge after a change of the distance of one of its ends: its distance function is computed
-  // here and kept for its propagation. The queue is a binary heap indexed by edge (a changed key moves the
-  // entry: no stale entries). An edge that cannot lower either opposite vertex (every candidate is at least
-  // the key) is not queued.
+  // here (and again, identical, when the edge propagates). The queue is a binary heap indexed by edge (a
+  // changed key moves the entry: no stale entries). An edge that cannot lower either opposite vertex (every
+  // candidate is at least the key) is not queued.
   void push_edge(const Incident_edge& ie)
   {
     if(!reached(ie.a) || !reached(ie.b))
@@ -291,7 +290,6 @@ private:
     } else if(i < 0 && queue_key_ == Queue_key::function_minimum && !(key < vs_[std::size_t(ie.y1)].dist) &&
               (ie.y2 < 0 || !(key < vs_[std::size_t(ie.y2)].dist)))
       return;
-    edge_function_[std::size_t(ie.edge)] = s;
     if(i < 0) {
       i = Index(heap_.size());
       heap_.push_back(Heap_entry{key, ie.edge});
@@ -421,7 +419,8 @@ private:
   void propagate_edge(Index e, const FT& key)
   {
     const Index h0 = mesh_.edge_halfedge[std::size_t(e)];
-    Pseudo_source s = edge_function_[std::size_t(e)];
+    // the edge's distance function: the same as when it was queued (a change at either end requeues it)
+    Pseudo_source s = pseudo_source_ab(he_source(h0), he_target(h0), he_[std::size_t(h0)].length);
     for(int side = 0; side < 2; ++side) {
       const Index h = side == 0 ? h0 : he_[std::size_t(h0)].twin;
       if(h < 0)
@@ -470,7 +469,7 @@ private:
     // The neighbours of a vertex source: along the edges (the pseudo-source of such an edge is its end).
     for(const Vertex_source& s : vertex_sources_)
       for(Index k = vedge_begin_[std::size_t(s.vertex)]; k < vedge_begin_[std::size_t(s.vertex) + 1]; ++k) {
-        const Index e = vedge_[std::size_t(k)].edge;
+        const Index e = vedge_[std::size_t(k)];
         const Index w = other_end(e, s.vertex);
         try_lower(w, vs_[std::size_t(s.vertex)].dist + he_[std::size_t(mesh_.edge_halfedge[std::size_t(e)])].length,
                   mesh_.edge_halfedge[std::size_t(e)], EDGE_NEIGHBOR, vs_[std::size_t(s.vertex)].source,
@@ -584,7 +583,7 @@ private:
   bool for_each_vertex_child(Index u, Visit visit) const
   {
     for(Index k = vedge_begin_[std::size_t(u)]; k < vedge_begin_[std::size_t(u) + 1]; ++k)
-      for(Index w = child_head_[std::size_t(vedge_[std::size_t(k)].edge)]; w >= 0; w = child_next_[std::size_t(w)])
+      for(Index w = child_head_[std::size_t(vedge_[std::size_t(k)])]; w >= 0; w = child_next_[std::size_t(w)])
         if(w != u && !visit(w))
           return false;
     return true;
@@ -648,8 +647,7 @@ private:
     // the propagation's arrays (the side links of the paths come on top: 5 bytes per edge)
     const std::size_t nv = mesh_.number_of_vertices, ne = mesh_.number_of_edges;
     std::size_t bytes = nv * (2 * sizeof(FT) + 7 * sizeof(Index) + 2 + 3 * sizeof(std::uint32_t)) +
-                        ne * (2 * sizeof(Index) + sizeof(Pseudo_source) + sizeof(Halfedge_data) * 3 / 2) +
-                        vedge_.size() * sizeof(Incident_edge) +
+                        ne * 2 * sizeof(Index) + he_.size() * sizeof(Halfedge_data) + vedge_.size() * sizeof(Index) +
                         peak_heap_ * sizeof(Heap_entry) + stack_.capacity() * sizeof(Index);
     if(bytes > stats_.peak_memory_bytes)
       stats_.peak_memory_bytes = bytes;
