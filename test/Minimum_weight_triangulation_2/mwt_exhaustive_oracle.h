@@ -47,34 +47,17 @@ inline Exhaustive_mwt exhaustive_mwt(const std::vector<Point>& p)
   const double rel = 1e-12;
   auto orient = [&](int a, int b, int c) { return int(CGAL::orientation(p[a], p[b], p[c])); };
   // valid segments (no input point in their relative interior)
-  std::vector<int> eid(std::size_t(n * n), -1);
-  std::vector<std::pair<int, int>> E;
-  for(int a = 0; a < n; ++a)
-    for(int b = a + 1; b < n; ++b) {
-      bool ok = true;
-      for(int c = 0; c < n && ok; ++c)
-        if(c != a && c != b && orient(a, b, c) == 0 && CGAL::collinear_are_strictly_ordered_along_line(p[a], p[c], p[b]))
-          ok = false;
-      if(ok) { eid[a * n + b] = eid[b * n + a] = int(E.size()); E.emplace_back(a, b); }
-    }
+  const std::vector<std::pair<int, int>> E = valid_segments(p);
   const std::size_t M = E.size();
+  std::vector<int> eid(std::size_t(n * n), -1);
+  for(std::size_t i = 0; i < M; ++i) eid[E[i].first * n + E[i].second] = eid[E[i].second * n + E[i].first] = int(i);
   std::vector<double> len(M);
   for(std::size_t i = 0; i < M; ++i) len[i] = length(p[E[i].first], p[E[i].second]);
-  std::vector<std::vector<char>> cross(M, std::vector<char>(M, 0));
-  for(std::size_t i = 0; i < M; ++i)
-    for(std::size_t j = i + 1; j < M; ++j) {
-      const int a = E[i].first, b = E[i].second, c = E[j].first, d = E[j].second;
-      if(a == c || a == d || b == c || b == d) continue;
-      cross[i][j] = cross[j][i] = orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
-    }
-  // hull edges: valid segments with no point strictly on one side; `need[a*n+b]`: the side left of a->b
-  // must be covered (the inner side of a hull edge; both sides of an interior edge)
+  const std::vector<std::vector<char>> cross = crossing_matrix(p, E);
+  // `need[a*n+b]`: the side left of a->b must be covered (the inner side of a hull edge; both sides of an
+  // interior edge)
   std::vector<char> hull_edge(M, 0);
-  for(std::size_t i = 0; i < M; ++i) {
-    int pos = 0, neg = 0;
-    for(int c = 0; c < n; ++c) { const int o = orient(E[i].first, E[i].second, c); pos += o > 0; neg += o < 0; }
-    hull_edge[i] = (pos == 0 || neg == 0);
-  }
+  for(std::size_t i = 0; i < M; ++i) hull_edge[i] = is_hull_segment(p, E[i]);
   std::vector<char> need(std::size_t(n * n), 0);
   for(std::size_t i = 0; i < M; ++i)
     for(int s = 0; s < 2; ++s) {

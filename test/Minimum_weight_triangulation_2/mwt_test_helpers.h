@@ -72,39 +72,65 @@ inline double length(const Point& a, const Point& b, MWT::Edge_metric m = MWT::E
   return std::sqrt(dx * dx + dy * dy);
 }
 
-/// Brute force: minimum over all triangulations (maximal non-crossing sets of segments with no point in
-/// their interior, of size 3n - h - 3) of the total edge length. Exponential: n <= 9.
-inline double brute_force_mwt(const std::vector<Point>& p, MWT::Edge_metric m = MWT::Edge_metric::L2)
+/// The segments between input points (a < b) with no input point in their relative interior: the possible
+/// triangulation edges. Exact orientation tests.
+inline std::vector<std::pair<int, int>> valid_segments(const std::vector<Point>& p)
 {
   const int n = int(p.size());
-  auto orient = [&](int a, int b, int c) { return int(CGAL::orientation(p[a], p[b], p[c])); };
   std::vector<std::pair<int, int>> E;
   for(int a = 0; a < n; ++a)
     for(int b = a + 1; b < n; ++b) {
       bool ok = true;
       for(int c = 0; c < n && ok; ++c)
-        if(c != a && c != b && orient(a, b, c) == 0 && CGAL::collinear_are_strictly_ordered_along_line(p[a], p[c], p[b]))
+        if(c != a && c != b && CGAL::orientation(p[a], p[b], p[c]) == CGAL::COLLINEAR &&
+           CGAL::collinear_are_strictly_ordered_along_line(p[a], p[c], p[b]))
           ok = false;
       if(ok) E.emplace_back(a, b);
     }
-  // h: points on the hull boundary (an edge with no point strictly on one side)
-  std::set<int> hull_pts;
-  std::size_t hull_edges = 0;
-  for(const auto& e : E) {
-    int pos = 0, neg = 0;
-    for(int c = 0; c < n; ++c) { const int o = orient(e.first, e.second, c); pos += o > 0; neg += o < 0; }
-    if(pos == 0 || neg == 0) { hull_pts.insert(e.first); hull_pts.insert(e.second); ++hull_edges; }
-  }
-  const std::size_t target = 3 * std::size_t(n) - hull_pts.size() - 3;
+  return E;
+}
+
+/// cross[i][j]: segments E[i] and E[j] (no shared end point) cross properly.
+inline std::vector<std::vector<char>> crossing_matrix(const std::vector<Point>& p,
+                                                      const std::vector<std::pair<int, int>>& E)
+{
+  auto orient = [&](int a, int b, int c) { return int(CGAL::orientation(p[a], p[b], p[c])); };
   const std::size_t M = E.size();
   std::vector<std::vector<char>> cross(M, std::vector<char>(M, 0));
   for(std::size_t i = 0; i < M; ++i)
     for(std::size_t j = i + 1; j < M; ++j) {
       const int a = E[i].first, b = E[i].second, c = E[j].first, d = E[j].second;
       if(a == c || a == d || b == c || b == d) continue;
-      const bool x = orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
-      cross[i][j] = cross[j][i] = x;
+      cross[i][j] = cross[j][i] = orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
     }
+  return cross;
+}
+
+/// A segment with no input point strictly on one of its sides: an edge of the convex hull boundary.
+inline bool is_hull_segment(const std::vector<Point>& p, const std::pair<int, int>& e)
+{
+  int pos = 0, neg = 0;
+  for(const Point& q : p) {
+    const CGAL::Orientation o = CGAL::orientation(p[e.first], p[e.second], q);
+    pos += o == CGAL::LEFT_TURN;
+    neg += o == CGAL::RIGHT_TURN;
+  }
+  return pos == 0 || neg == 0;
+}
+
+/// Brute force: minimum over all triangulations (maximal non-crossing sets of segments with no point in
+/// their interior, of size 3n - h - 3) of the total edge length. Exponential: n <= 9.
+inline double brute_force_mwt(const std::vector<Point>& p, MWT::Edge_metric m = MWT::Edge_metric::L2)
+{
+  const int n = int(p.size());
+  const std::vector<std::pair<int, int>> E = valid_segments(p);
+  // h: points on the hull boundary
+  std::set<int> hull_pts;
+  for(const auto& e : E)
+    if(is_hull_segment(p, e)) { hull_pts.insert(e.first); hull_pts.insert(e.second); }
+  const std::size_t target = 3 * std::size_t(n) - hull_pts.size() - 3;
+  const std::size_t M = E.size();
+  const std::vector<std::vector<char>> cross = crossing_matrix(p, E);
   std::vector<double> w(M);
   for(std::size_t i = 0; i < M; ++i) w[i] = length(p[E[i].first], p[E[i].second], m);
   double best = std::numeric_limits<double>::infinity();

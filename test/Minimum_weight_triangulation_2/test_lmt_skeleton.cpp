@@ -23,25 +23,9 @@ typedef std::pair<int, int> Seg;
 // All minimum weight triangulations (edge sets) by enumeration of maximal non-crossing segment sets; n <= 8.
 std::vector<std::set<Seg>> all_mwts(const std::vector<Point>& p)
 {
-  const int n = int(p.size());
-  auto orient = [&](int a, int b, int c) { return int(CGAL::orientation(p[a], p[b], p[c])); };
-  std::vector<Seg> E;
-  for(int a = 0; a < n; ++a)
-    for(int b = a + 1; b < n; ++b) {
-      bool ok = true;
-      for(int c = 0; c < n && ok; ++c)
-        if(c != a && c != b && orient(a, b, c) == 0 && CGAL::collinear_are_strictly_ordered_along_line(p[a], p[c], p[b]))
-          ok = false;
-      if(ok) E.emplace_back(a, b);
-    }
+  const std::vector<Seg> E = valid_segments(p);
   const std::size_t M = E.size();
-  std::vector<std::vector<char>> cross(M, std::vector<char>(M, 0));
-  for(std::size_t i = 0; i < M; ++i)
-    for(std::size_t j = i + 1; j < M; ++j) {
-      const int a = E[i].first, b = E[i].second, c = E[j].first, d = E[j].second;
-      if(a == c || a == d || b == c || b == d) continue;
-      cross[i][j] = cross[j][i] = orient(a, b, c) * orient(a, b, d) < 0 && orient(c, d, a) * orient(c, d, b) < 0;
-    }
+  const std::vector<std::vector<char>> cross = crossing_matrix(p, E);
   std::vector<std::pair<double, std::set<Seg>>> found;
   std::vector<std::size_t> chosen;
   // maximal sets: after the recursion, every skipped edge must cross a chosen one

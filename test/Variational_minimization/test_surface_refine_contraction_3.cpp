@@ -5,7 +5,7 @@
 
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/analytic_solutions_3.h>
-#include <CGAL/Variational_minimization/internal/surface_contracted_network_3.h>
+#include <CGAL/Min_cut/internal/contract_terminal_nodes.h>
 #include <CGAL/Variational_minimization/refine_surface_3.h>
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
 
@@ -16,7 +16,7 @@
 namespace VM = CGAL::Variational_minimization;
 typedef CGAL::Min_cut::Flow_network<double> Network;
 
-TEST_CASE("contract_terminal_nodes_3: same minimum cut as infinite ties", "[variational][surface][refinement]")
+TEST_CASE("contract_terminal_nodes: same minimum cut as infinite ties", "[variational][surface][refinement]")
 {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> U(0, 1);
@@ -46,7 +46,7 @@ TEST_CASE("contract_terminal_nodes_3: same minimum cut as infinite ties", "[vari
       if(label[k] == 2) tied.add_sink_facet(k, inf, id++);
     }
     const auto expected = CGAL::Min_cut::solve_min_cut(tied);
-    const VM::internal::Contracted_network_3<double> c = VM::internal::contract_terminal_nodes_3(full, label);
+    const CGAL::Min_cut::internal::Contracted_network<double> c = CGAL::Min_cut::internal::contract_terminal_nodes(full, label);
     std::size_t kept = 0;
     for(char l : label) kept += l == 0 ? 1 : 0;
     CHECK(c.network.number_of_nodes() == kept);

@@ -8,10 +8,10 @@
 #define CGAL_VARIATIONAL_MINIMIZATION_REFINE_SURFACE_3_H
 
 #include <CGAL/MDCS/progress.h>
+#include <CGAL/Min_cut/internal/contract_terminal_nodes.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
-#include <CGAL/Variational_minimization/internal/surface_contracted_network_3.h>
 #include <CGAL/Variational_minimization/internal/surface_dual_network_3.h>
 #include <CGAL/Variational_minimization/internal/surface_height_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
@@ -169,7 +169,7 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
       ++result.cells_above;
     }
   }
-  internal::Contracted_network_3<double> reduced = internal::contract_terminal_nodes_3(network, label);
+  CGAL::Min_cut::internal::Contracted_network<double> reduced = CGAL::Min_cut::internal::contract_terminal_nodes(network, label);
   network = CGAL::Min_cut::Flow_network<double>(); // release the full network before the solve
   result.network_nodes = reduced.network.number_of_nodes();
   result.network_facets = reduced.network.number_of_facets();

@@ -259,32 +259,6 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
     if(double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
     return f;
   };
-  // cell_mask[(di, dj)]: the sectors of every direction from a point of a cell to a point of the cell (di, dj)
-  // cells away, |di|, |dj| <= K, max(|di|, |dj|) >= 2 (the directions of the box [(di-1)c, (di+1)c] x
-  // [(dj-1)c, (dj+1)c], which does not hold the origin; widened by the angle error)
-  const int K = 32;
-  std::vector<std::uint64_t> cell_mask(std::size_t(2 * K + 1) * std::size_t(2 * K + 1), ~std::uint64_t(0));
-  for(int dj = -K; dj <= K; ++dj)
-    for(int di = -K; di <= K; ++di) {
-      if(std::max(std::abs(di), std::abs(dj)) < 2) continue;
-      const double tc = std::atan2(double(dj), double(di));
-      double lo = 0, hi = 0;
-      for(int corner = 0; corner < 4; ++corner) {
-        const double x = di + ((corner & 1) ? 1 : -1), y = dj + ((corner & 2) ? 1 : -1);
-        double d = std::atan2(y, x) - tc;
-        if(d > 3.141592653589793) d -= two_pi;
-        if(d < -3.141592653589793) d += two_pi;
-        lo = std::min(lo, d);
-        hi = std::max(hi, d);
-      }
-      double a0 = tc + lo - slack - 1e-9;
-      if(a0 < 0) a0 += two_pi;
-      const int s0 = int(std::floor(a0 / w)), cnt = int(std::floor((a0 + (hi - lo) + 2 * slack + 2e-9) / w)) - s0 + 1;
-      if(cnt >= S) continue;
-      const std::uint64_t run = (std::uint64_t(1) << cnt) - 1;
-      const int sh = ((s0 % S) + S) % S;
-      cell_mask[std::size_t(di + K) + std::size_t(2 * K + 1) * std::size_t(dj + K)] = sh == 0 ? run : ((run << sh) | (run >> (S - sh)));
-    }
   const int wedge = int(std::ceil(pi8 / w)) + 1;
   // the sectors of every direction of a vector in the box [x0, x1] x [y0, y1] (which does not hold the origin),
   // widened by the angle error: the directions form an arc shorter than pi around the centre's direction
@@ -309,6 +283,16 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
     const int sh = ((s0 % S) + S) % S;
     return sh == 0 ? run : ((run << sh) | (run >> (S - sh)));
   };
+  // cell_mask[(di, dj)]: the sectors of every direction from a point of a cell to a point of the cell (di, dj)
+  // cells away, |di|, |dj| <= K, max(|di|, |dj|) >= 2: the directions of the box [(di-1)c, (di+1)c] x
+  // [(dj-1)c, (dj+1)c], which does not hold the origin (the scale c does not change the directions)
+  const int K = 32;
+  std::vector<std::uint64_t> cell_mask(std::size_t(2 * K + 1) * std::size_t(2 * K + 1), ~std::uint64_t(0));
+  for(int dj = -K; dj <= K; ++dj)
+    for(int di = -K; di <= K; ++di)
+      if(std::max(std::abs(di), std::abs(dj)) >= 2)
+        cell_mask[std::size_t(di + K) + std::size_t(2 * K + 1) * std::size_t(dj + K)] =
+          offset_mask(di - 1.0, di + 1.0, dj - 1.0, dj + 1.0);
   CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "candidate edges", std::size_t(n) + 1);
   for(int p = 0; p < n; ++p) {
     report(std::size_t(p));

@@ -141,6 +141,19 @@ private:
   std::vector<Wall_curve_3> lower_, upper_;
 };
 
+// The arcs of a facet between two cells over the domain: a non-vertical facet separates the cell below from the
+// cell above, the arc below->above costs the facet weight and the reverse arc is infinite (so every finite cut is
+// the graph of a function); a vertical facet is infinite both ways.
+inline void add_interior_facet_3(CGAL::Min_cut::Flow_network<double>& network, const Plane_arrangement_3::Facet& x,
+                                 const Lattice_plane_3& p, double weight,
+                                 CGAL::Min_cut::Flow_network<double>::Facet_index id)
+{
+  const double inf = CGAL::Min_cut::Flow_network<double>::infinity();
+  if(p.c == 0) network.add_facet(x.negative_cell, x.positive_cell, inf, inf, id);
+  else if(p.c > 0) network.add_facet(x.negative_cell, x.positive_cell, weight, inf, id);
+  else network.add_facet(x.positive_cell, x.negative_cell, weight, inf, id);
+}
+
 // A polygonal domain: cells outside Ω get no arcs; a facet between a cell over Ω and the outside (or the box) ties
 // that cell like a side wall: floor and ceiling facets with their weight, vertical facets infinitely below the
 // lower curve (source) and above the upper one (sink).
@@ -165,9 +178,7 @@ inline CGAL::Min_cut::Flow_network<double> polygon_dual_network_3(const Plane_ar
     if(!in_n && !in_p) continue;
     const Lattice_plane_3& p = arrangement.plane(x.plane);
     if(in_n && in_p) {
-      if(p.c == 0) network.add_facet(x.negative_cell, x.positive_cell, inf, inf, id);
-      else if(p.c > 0) network.add_facet(x.negative_cell, x.positive_cell, weights[i], inf, id);
-      else network.add_facet(x.positive_cell, x.negative_cell, weights[i], inf, id);
+      add_interior_facet_3(network, x, p, weights[i], id);
       continue;
     }
     const Arr::Cell_index cell = in_n ? x.negative_cell : x.positive_cell;
@@ -217,10 +228,7 @@ inline CGAL::Min_cut::Flow_network<double> surface_dual_network_3(const Plane_ar
       if(tie > 0) network.add_source_facet(inside, inf, id);
       else if(tie < 0) network.add_sink_facet(inside, inf, id);
     } else {
-      const Lattice_plane_3& p = arrangement.plane(x.plane);
-      if(p.c == 0) network.add_facet(x.negative_cell, x.positive_cell, inf, inf, id);
-      else if(p.c > 0) network.add_facet(x.negative_cell, x.positive_cell, weights[i], inf, id);
-      else network.add_facet(x.positive_cell, x.negative_cell, weights[i], inf, id);
+      add_interior_facet_3(network, x, arrangement.plane(x.plane), weights[i], id);
     }
   }
   return network;

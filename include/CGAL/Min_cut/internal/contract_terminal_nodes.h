@@ -1,10 +1,10 @@
 // Copyright (c) 2026 MDCS contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Contraction of the cells that adaptive refinement ties to a terminal: a smaller flow network with the same
-// minimum cuts (thesis ch. 2.7, "cells above/below the envelope merged into sink/source").
-#ifndef CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_SURFACE_CONTRACTED_NETWORK_3_H
-#define CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_SURFACE_CONTRACTED_NETWORK_3_H
+// Contraction of the nodes tied to a terminal: a smaller flow network with the same minimum cuts. Adaptive
+// refinement of minimal surfaces uses it (thesis ch. 2.7, "cells above/below the envelope merged into sink/source").
+#ifndef CGAL_MIN_CUT_INTERNAL_CONTRACT_TERMINAL_NODES_H
+#define CGAL_MIN_CUT_INTERNAL_CONTRACT_TERMINAL_NODES_H
 
 #include <CGAL/Min_cut/Flow_network.h>
 
@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace CGAL {
-namespace Variational_minimization {
+namespace Min_cut {
 namespace internal {
 
 // The network with every node of label 1 merged into the source and every node of label 2 into the sink (label
@@ -22,7 +22,7 @@ namespace internal {
 // one makes every cut infinite: `is_finite` false). A minimum cut of `network` plus `constant` is a minimum cut of
 // the original network with the labelled nodes tied to their terminal by infinite arcs, with the same facets.
 template <class Capacity>
-struct Contracted_network_3
+struct Contracted_network
 {
   CGAL::Min_cut::Flow_network<Capacity> network;
   std::vector<std::uint32_t> node;  // per original node: its new index, or a terminal (null)
@@ -32,13 +32,13 @@ struct Contracted_network_3
 };
 
 template <class Capacity>
-Contracted_network_3<Capacity> contract_terminal_nodes_3(const CGAL::Min_cut::Flow_network<Capacity>& full,
+Contracted_network<Capacity> contract_terminal_nodes(const CGAL::Min_cut::Flow_network<Capacity>& full,
                                                          const std::vector<char>& label)
 {
   typedef CGAL::Min_cut::Flow_network<Capacity> Network;
   const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
   const Capacity inf = Network::infinity();
-  Contracted_network_3<Capacity> out;
+  Contracted_network<Capacity> out;
   out.node.assign(full.number_of_nodes(), none);
   std::uint32_t kept = 0;
   for(std::size_t i = 0; i < label.size(); ++i)
@@ -78,7 +78,7 @@ Contracted_network_3<Capacity> contract_terminal_nodes_3(const CGAL::Min_cut::Fl
 }
 
 } // namespace internal
-} // namespace Variational_minimization
+} // namespace Min_cut
 } // namespace CGAL
 
-#endif // CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_SURFACE_CONTRACTED_NETWORK_3_H
+#endif // CGAL_MIN_CUT_INTERNAL_CONTRACT_TERMINAL_NODES_H
