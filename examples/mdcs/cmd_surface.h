@@ -50,15 +50,15 @@ inline const char* surface_usage()
     "  --planes N          planes per arrangement (default 150)\n"
     "  --segments S        boundary segments per side (per polygon edge) of the domain (default 4)\n"
     "  --domain P          a polygonal domain instead of the problem's rectangle: \"x0,y0;x1,y1;...\" (a simple\n"
-    "                      polygon; vertices rounded to 1/256 of its bounding box) or L (an L inside the rectangle);\n"
-    "                      not with --relax or --refine\n"
+    "                      polygon; vertices rounded to 1/256 of its bounding box) or L (an L inside the rectangle)\n"
     "  --distribution D    slope (slope-limited, default) | isotropic\n"
     "  --max-slope S       slope bound of slope-limited planes (default 3)\n"
     "  --pencil-fraction F share of the planes through the boundary segments (default 0.2)\n"
     "  --plane-selection K plane selection with K iterations (default 1: a single solve)\n"
     "  --refine R          adaptive refinement: R runs give an envelope, a new arrangement of N planes keeps\n"
     "                      their optima's planes and adds planes inside it (default 0: off)\n"
-    "  --relax             continue with local relaxation on 20^2, 40^2, 80^2 grids (L-BFGS)\n"
+    "  --relax             continue with local relaxation on 20^2, 40^2, 80^2 grids (L-BFGS; on a polygonal\n"
+    "                      domain: on Delaunay meshes of the polygon with the edge lengths of those grids)\n"
     "  --engine pf|pr|bk   max-flow engine: pseudoflow (default), push-relabel, Boykov-Kolmogorov\n"
     "  --seed S            random seed (default 1)\n"
     "  --output DIR        output folder (default mdcs-output); files NAME.ply/.svg/.png/_summary.txt\n"
@@ -93,7 +93,7 @@ struct Surface_run
   bool has_relaxed = false;
   std::vector<double> selection_energies;
   std::vector<double> refine_energies;
-  std::size_t refine_below = 0, refine_above = 0, refine_nodes = 0;
+  std::size_t refine_below = 0, refine_above = 0, refine_nodes = 0, refine_outside = 0;
   double exact = NAN;
   std::size_t cells = 0, facets = 0, vertices = 0, pencils = 0;
   double seconds_build = 0, seconds_weights = 0, seconds_cut = 0, seconds_relax = 0, seconds_total = 0;
@@ -211,8 +211,6 @@ inline Surface_settings parse_surface_settings(const Options& o)
   if(s.refine > 0 && s.plane_selection > 1) throw Usage_error("--refine and --plane-selection exclude each other");
   s.relax = o.has("relax");
   o.text("relax", "");
-  if(!s.domain.empty() && (s.relax || s.refine > 0))
-    throw Usage_error("--relax and --refine need the rectangular domain (not --domain)");
   s.engine = o.text("engine", s.engine);
   if(s.engine != "pf" && s.engine != "pr" && s.engine != "bk") throw Usage_error("--engine must be pf, pr or bk");
   s.seed = o.integer("seed", s.seed, 0);
@@ -286,6 +284,7 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
       run.refine_below = r.cells_below;
       run.refine_above = r.cells_above;
       run.refine_nodes = r.network_nodes;
+      run.refine_outside = r.cells_outside;
       run.cells = r.cells;
       const VM3::Plane_arrangement_3 A(r.planes);
       run.facets = A.number_of_facets();
@@ -390,14 +389,20 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
     sum << "refinement        run energies";
     for(double e : run.refine_energies) sum << ' ' << e;
     sum << "; refined arrangement: " << run.refine_below << " cells below the envelope merged into the source, "
-        << run.refine_above << " above into the sink, " << run.refine_nodes << " cells left in the network\n";
+        << run.refine_above << " above into the sink, ";
+    if(run.problem.is_polygonal()) sum << run.refine_outside << " outside the domain left out, ";
+    sum << run.refine_nodes << " cells left in the network\n";
   }
   if(std::isfinite(run.exact))
     sum << "exact area        " << run.exact << " (relative error " << std::setprecision(3)
         << (run.surface.energy - run.exact) / run.exact << ")\n" << std::setprecision(10);
   if(run.has_relaxed) {
-    sum << "relaxed energy    " << run.relaxed.energy << " on an " << run.relaxed.n << "^2 grid ("
-        << run.relaxed.iterations << " L-BFGS iterations)";
+    sum << "relaxed energy    " << run.relaxed.energy;
+    if(run.relaxed.triangles.empty()) sum << " on an " << run.relaxed.n << "^2 grid (";
+    else
+      sum << " on a mesh of the polygon, " << run.relaxed.triangles.size() << " triangles (level " << run.relaxed.n
+          << ", ";
+    sum << run.relaxed.iterations << " L-BFGS iterations)";
     if(std::isfinite(run.exact))
       sum << ", relative error " << std::setprecision(3) << (run.relaxed.energy - run.exact) / run.exact;
     sum << "\n" << std::setprecision(10);
@@ -415,7 +420,10 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
   cap1 << std::setprecision(8) << run.cells << " cells from " << s.planes << " planes; discrete energy "
        << run.surface.energy << (run.has_relaxed ? ", relaxed " : "");
   if(run.has_relaxed) cap1 << run.relaxed.energy;
-  cap2 << (run.has_relaxed ? "relaxed surface shown (" + std::to_string(run.relaxed.n) + "^2 grid)" : "discrete surface shown")
+  const std::string relaxed_on = run.relaxed.triangles.empty()
+                                   ? std::to_string(run.relaxed.n) + "^2 grid"
+                                   : std::to_string(run.relaxed.triangles.size()) + "-triangle mesh";
+  cap2 << (run.has_relaxed ? "relaxed surface shown (" + relaxed_on + ")" : "discrete surface shown")
        << (run.problem.is_relaxed() ? "; boundary free in the band" : "; boundary curve in red");
   write_surface_svg(run.svg, run.has_relaxed ? VM3::grid_surface_mesh_3(run.problem, run.relaxed) : run.surface,
                     run.problem, "mdcs surface: " + s.problem, {cap1.str(), cap2.str()});
@@ -456,7 +464,7 @@ inline bool demo_surface(const std::filesystem::path& folder, bool quick, bool q
                                                            {"saddle", 60, 1, false, "L"}}
                                        : std::vector<Demo>{{"saddle", 120, 1, true, ""}, {"membrane", 120, 1, false, ""},
                                                            {"scherk", 140, 1, true, ""}, {"blobs", 90, 3, true, ""},
-                                                           {"saddle", 120, 1, false, "L"}};
+                                                           {"saddle", 120, 1, true, "L"}};
   for(const Demo& d : runs) {
     Surface_settings s;
     s.problem = d.problem;

@@ -12,6 +12,7 @@
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/internal/surface_domain_cells_3.h>
 #include <CGAL/Variational_minimization/internal/surface_dual_network_3.h>
 #include <CGAL/Variational_minimization/internal/surface_height_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
@@ -42,6 +43,8 @@ struct Surface_refinement_result_3
   std::size_t kept_planes = 0;
   /// The refined arrangement's cells, and those tied to the source (below the envelope) or the sink (above).
   std::size_t cells = 0, cells_below = 0, cells_above = 0;
+  /// On a polygonal domain, the cells outside Ω (no arcs; left out of the network); 0 on a rectangle.
+  std::size_t cells_outside = 0;
   /// The contracted flow network that was solved: its nodes (the cells inside the widened envelope) and interior
   /// facets (arcs between two of them).
   std::size_t network_nodes = 0, network_facets = 0;
@@ -59,7 +62,11 @@ struct Surface_refinement_result_3
   Every s_r stays feasible, hence the refined energy is at most the best run's (up to the rounding of the weights;
   exactly for closed-form weights). If the runs' optima need more than `n` planes, all are kept (more than `n`).
   `progress` is called with stage `"refinement"`.
-  \throws std::invalid_argument for an invalid problem or functional, a polygonal domain, `runs < 1`, a negative or NaN margin, or a
+  On a polygonal domain the kept planes include the vertical planes of the polygon's edges (they are among the
+  first run's pencils), the new planes pass through random points of the envelope over Ω (points of the bounding
+  box outside the polygon are redrawn), and the cells outside Ω, which have no arcs, are left out of the network
+  (they are not counted in `cells_below` or `cells_above`).
+  \throws std::invalid_argument for an invalid problem or functional, `runs < 1`, a negative or NaN margin, or a
           run without a feasible surface.
 */
 template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine,
@@ -73,9 +80,6 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
   if(runs < 1) throw std::invalid_argument("MDCS: refine_surface_3: at least one run is needed");
   if(!(margin >= 0)) throw std::invalid_argument("MDCS: refine_surface_3: the margin must be >= 0");
   problem.validate();
-  if(problem.is_polygonal())
-    throw std::invalid_argument("MDCS: refine_surface_3: adaptive refinement needs a rectangular domain; a polygonal "
-                                "domain is not supported");
   CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "refinement", std::size_t(runs) + 1);
   Surface_refinement_result_3 result;
   std::vector<Minimal_surface_3> surfaces;
@@ -125,8 +129,10 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
     std::mt19937_64 rng(options.seed * 6364136223846793005ull + 1442695040888963407ull);
     std::uniform_real_distribution<double> U(0, 1), S(-options.max_slope, options.max_slope);
     std::normal_distribution<double> N;
+    const std::vector<internal::Lattice_point_2> polygon = problem.lattice_polygon();
     while(result.planes.size() < n) {
       const double u = U(rng), v = U(rng);
+      if(problem.is_polygonal() && !internal::lattice_polygon_contains(polygon, u * L, v * L)) continue;
       const double x = problem.domain.xmin() + u * (problem.domain.xmax() - problem.domain.xmin()),
                    y = problem.domain.ymin() + v * (problem.domain.ymax() - problem.domain.ymin());
       double lo, hi;
@@ -151,7 +157,14 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
   // are contracted into the source (label 1) or the sink (label 2).
   std::vector<char> label(arrangement.number_of_cells(), 0);
   const double eps = margin + 1e-9 * (problem.zmax - problem.zmin);
+  // Cells outside a polygonal Ω have no arcs: merging them into the source leaves them out of the network.
+  const std::vector<char> inside = internal::surface_domain_cells_3(arrangement, problem);
   for(std::size_t c = 0; c < arrangement.number_of_cells(); ++c) {
+    if(!inside[c]) {
+      label[c] = 1;
+      ++result.cells_outside;
+      continue;
+    }
     std::array<double, 3> m = {{0, 0, 0}};
     std::size_t k = 0;
     for(Arr::Facet_index f : arrangement.cell_facets(Arr::Cell_index(c)))
