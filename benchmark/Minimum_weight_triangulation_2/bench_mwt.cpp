@@ -6,7 +6,7 @@
 // peak memory, and the fraction of integral LP optima over many random sets (thesis ch. 3.4.4).
 //
 // usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R]
-//                  [--sets S] [--max-wheel K] [--csv FILE]
+//                  [--sets S] [--max-wheel K] [--trace-memory] [--csv FILE]
 //   --lmt: the LMT-skeleton + face dynamic program + LP pipeline (Mwt_options::use_lmt_skeleton);
 //   --no-random: wheels only; --bb-limit: branch-and-bound limit per wheel in seconds (default 120).
 //   default sizes 100, 300, 1000, 2000 uniform; --large adds 5000 and 10000 (one run each unless --sizes is
@@ -15,6 +15,9 @@
 //   repeats; t_total = their sum (t_setup: Hilbert sort, checks, hull, grid). peak_MiB: process peak so far.
 //   dp_exact_faces / dp_exact_decisions (--lmt): faces and decisions of the face programs that double
 //   precision could not separate and the exact comparison of sums of square roots decided.
+//   --trace-memory: the peak resident set of every stage (the progress callback resets the kernel's peak
+//   counter, /proc/self/clear_refs, when a stage starts), printed and written to <csv>_memory.csv; peak_MiB is
+//   then the maximum over the stages (the kernel's own peak, and /usr/bin/time's, only cover the last stage).
 
 // stage times in processor time (std::clock): the benchmark machine may be shared
 #define MDCS_MWT_CPU_TIMERS 1
@@ -23,6 +26,7 @@
 
 #include "mdcs_bench.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -69,7 +73,7 @@ std::vector<Point> wheel(int k)
 
 int main(int argc, char** argv)
 {
-  bool large = false, uniform_only = false, lmt = false, no_random = false;
+  bool large = false, uniform_only = false, lmt = false, no_random = false, trace_memory = false;
   double bb_limit = 120;
   std::vector<int> sizes{100, 300, 1000, 2000};
   bool explicit_sizes = false;
@@ -85,6 +89,7 @@ int main(int argc, char** argv)
     else if(a == "--uniform-only") uniform_only = true;
     else if(a == "--lmt") lmt = true;
     else if(a == "--no-random") no_random = true;
+    else if(a == "--trace-memory") trace_memory = true;
     else if(a == "--bb-limit" && i + 1 < argc) bb_limit = std::atof(argv[++i]);
     else if(a == "--sizes" && i + 1 < argc) {
       sizes.clear();
@@ -96,13 +101,32 @@ int main(int argc, char** argv)
         pos = comma == std::string::npos ? list.size() : comma + 1;
       }
     }
-    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R] [--sets S] [--max-wheel K] [--csv FILE]\n"); return 2; }
+    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R] [--sets S] [--max-wheel K] [--trace-memory] [--csv FILE]\n"); return 2; }
   }
   mdcs_bench::Table table({"input", "n", "status", "weight", "LP_opt", "cand_edges", "edges_per_n", "triangles", "lp_cols",
                            "lp_rows", "t_setup", "t_candidates", "t_triangles", "t_lp_build", "t_lp_solve", "t_certificate",
                            "t_branch_bound", "t_total", "peak_MiB", "lmt_certain", "lmt_possible", "faces",
                            "dp_faces", "dp_triangles", "largest_face", "t_lmt", "t_face_dp", "dp_exact_faces",
                            "dp_exact_decisions"});
+  // --trace-memory: per stage the resident set when it starts and its peak (peak counter reset at every start)
+  mdcs_bench::Table memory_table({"input", "n", "stage", "resident_at_start_MiB", "peak_MiB"});
+  // the resets make the kernel's peak (VmHWM, also what /usr/bin/time reports) the peak since the last stage
+  // start: traced_peak keeps the maximum over the stages
+  std::string stage_now;
+  double stage_rss0 = 0, traced_peak = 0;
+  auto close_stage = [&](const std::string& name, std::size_t n) {
+    const double peak = mdcs_bench::peak_rss_mib();
+    traced_peak = std::max(traced_peak, peak);
+    if(!stage_now.empty())
+      memory_table.add_row({name, std::to_string(n), stage_now, mdcs_bench::fmt(stage_rss0, "%.0f"),
+                            mdcs_bench::fmt(peak, "%.0f")});
+    stage_now.clear();
+  };
+  auto open_stage = [&](const std::string& stage) {
+    mdcs_bench::reset_peak_rss();
+    stage_now = stage;
+    stage_rss0 = mdcs_bench::current_rss_mib();
+  };
   auto run = [&](const std::string& name, const std::vector<Point>& p, int reps, double bb_limit) {
     std::vector<double> tsu, tc, tt, tb, ts, tcert, tbb, tot, tl, tf;
     MWT::Mwt_result r;
@@ -110,7 +134,16 @@ int main(int argc, char** argv)
       MWT::Mwt_options o;
       o.branch_and_bound_time_limit = bb_limit;
       o.use_lmt_skeleton = lmt;
+      const bool trace = trace_memory && k == reps - 1;
+      if(trace) {
+        open_stage("setup (Hilbert sort, hull, grid)");
+        o.progress = [&](const char* stage, double) {
+          if(stage_now != stage) { close_stage(name, p.size()); open_stage(stage); }
+          return true;
+        };
+      }
       r = MWT::minimum_weight_triangulation_2(p, o);
+      if(trace) close_stage(name, p.size());
       const auto& s = r.statistics;
       tsu.push_back(s.time_setup); tc.push_back(s.time_candidates); tt.push_back(s.time_triangles); tb.push_back(s.time_lp_build);
       ts.push_back(s.time_lp_solve); tcert.push_back(s.time_certificate); tbb.push_back(s.time_branch_and_bound);
@@ -124,7 +157,7 @@ int main(int argc, char** argv)
                    mdcs_bench::fmt(mdcs_bench::median(tt)), mdcs_bench::fmt(mdcs_bench::median(tb)),
                    mdcs_bench::fmt(mdcs_bench::median(ts)), mdcs_bench::fmt(mdcs_bench::median(tcert)),
                    mdcs_bench::fmt(mdcs_bench::median(tbb)), mdcs_bench::fmt(mdcs_bench::median(tot)),
-                   mdcs_bench::fmt(mdcs_bench::peak_rss_mib(), "%.0f"), std::to_string(s.lmt_certain_edges),
+                   mdcs_bench::fmt(std::max(mdcs_bench::peak_rss_mib(), traced_peak), "%.0f"), std::to_string(s.lmt_certain_edges),
                    std::to_string(s.lmt_possible_edges), std::to_string(s.lmt_faces), std::to_string(s.lmt_solved_faces),
                    std::to_string(s.dp_triangles), std::to_string(s.lmt_largest_face), mdcs_bench::fmt(mdcs_bench::median(tl)),
                    mdcs_bench::fmt(mdcs_bench::median(tf)), std::to_string(s.dp_exact_faces),
@@ -141,6 +174,13 @@ int main(int argc, char** argv)
   for(int k = 13; k <= max_wheel; k += (k < 21 ? 2 : 10)) run("wheel", wheel(k), 1, bb_limit);
   table.print();
   if(!table.write_csv(csv)) std::fprintf(stderr, "cannot write %s\n", csv.c_str());
+  if(trace_memory) {
+    std::printf("\nPeak resident set per stage (MiB; a stage lasts until the next one reports: \"face dynamic program\"\n"
+                "includes building the LP, and the last stage the certificate and the validation):\n");
+    memory_table.print();
+    const auto dot = csv.rfind(".csv");
+    memory_table.write_csv((dot == std::string::npos ? csv : csv.substr(0, dot)) + "_memory.csv");
+  }
 
   // Thesis experiment: fraction of integral LP optima over random uniform sets of 10, 20, 60, 200 points.
   if(sets > 0) {

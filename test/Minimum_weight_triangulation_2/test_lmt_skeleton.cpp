@@ -13,6 +13,10 @@
 #include <catch2/catch.hpp>
 
 #include <map>
+#include <set>
+#include <functional>
+#include <array>
+#include <algorithm>
 
 using namespace mwt_test;
 
@@ -226,6 +230,72 @@ TEST_CASE("lmt: mixed instance: dynamic program on some faces, LP (with branch a
     CHECK(r.statistics.lp_columns > 0);            // the faces around the two-point centres need the LP
     CHECK(r.statistics.lp_columns < plain.statistics.lp_columns);
     CHECK(independent_triangulation_check(p, r.triangles));
+  }
+}
+
+// The empty triangles are stored by their three edges only (12 bytes each, memory at 10^7 points): the vertices,
+// sides and apexes derived from the edges must be those of the triangles, which must be exactly the empty
+// triangles over the valid segments (brute force, exact orientations); the filtered edge index and compaction.
+TEST_CASE("lmt: triangles stored by edges: vertices, sides, apexes against brute force", "[mwt][lmt][oracle]")
+{
+  std::vector<std::vector<Point>> sets{uniform_points(40, 71), clustered_points(40, 72)};
+  std::vector<Point> grid_points;   // collinear triples: triangles with a point on an edge are not empty
+  for(int i = 0; i < 6; ++i)
+    for(int j = 0; j < 6; ++j) grid_points.emplace_back(i, j);
+  sets.push_back(grid_points);
+  for(const auto& p : sets) {
+    MWT::internal::Indexed_points_2<K> pts(p);
+    MWT::internal::Point_grid_2 grid(pts);
+    std::function<bool(const char*, double)> progress = [](const char*, double) { return true; };
+    const std::vector<std::pair<int, int>> edges = MWT::internal::all_valid_edges(pts, grid, progress);
+    const MWT::internal::Edge_index index(edges, p.size());
+    const MWT::internal::Triangle_set tri = MWT::internal::empty_triangles(pts, grid, index, edges, progress);
+    std::set<std::array<int, 3>> found, expected;
+    for(std::size_t t = 0; t < tri.size(); ++t) {
+      const std::array<int, 3> v = tri.vertices(int(t));
+      REQUIRE(CGAL::orientation(p[v[0]], p[v[1]], p[v[2]]) == CGAL::LEFT_TURN);
+      for(int i = 0; i < 3; ++i) {
+        CHECK(tri.edge(int(t), i) == index.find(v[i], v[(i + 1) % 3]));
+        CHECK(tri.side(int(t), i) == (v[i] < v[(i + 1) % 3] ? 1 : -1));
+        CHECK(tri.apex(int(t), tri.edge(int(t), i)) == v[(i + 2) % 3]);
+        CHECK(tri.triangle(int(t)).side(i) == tri.side(int(t), i));
+      }
+      std::array<int, 3> s = v;
+      std::sort(s.begin(), s.end());
+      CHECK(found.insert(s).second);   // no triangle twice
+    }
+    const std::set<std::pair<int, int>> valid(edges.begin(), edges.end());
+    const int n = int(p.size());
+    for(int a = 0; a < n; ++a)
+      for(int b = a + 1; b < n; ++b)
+        for(int c = b + 1; c < n; ++c) {
+          if(!valid.count({a, b}) || !valid.count({b, c}) || !valid.count({a, c})) continue;
+          const CGAL::Orientation o = CGAL::orientation(p[a], p[b], p[c]);
+          if(o == CGAL::COLLINEAR) continue;
+          bool empty = true;
+          for(int r = 0; r < n && empty; ++r)
+            if(r != a && r != b && r != c && CGAL::orientation(p[a], p[b], p[r]) == o &&
+               CGAL::orientation(p[b], p[c], p[r]) == o && CGAL::orientation(p[c], p[a], p[r]) == o)
+              empty = false;
+          if(empty) expected.insert({{a, b, c}});
+        }
+    CHECK(found == expected);
+    CHECK(expected.size() > p.size());
+    // round trip through Lp_triangle, and compaction keeps the order
+    std::vector<MWT::internal::Lp_triangle> as_lp;
+    for(std::size_t t = 0; t < tri.size(); ++t) as_lp.push_back(tri.triangle(int(t)));
+    MWT::internal::Triangle_set back(edges, as_lp), odd(edges, as_lp);
+    odd.compact([](int t) { return t % 2 == 1; });
+    REQUIRE(back.size() == tri.size());
+    REQUIRE(odd.size() == tri.size() / 2);
+    for(std::size_t t = 0; t < tri.size(); ++t) CHECK(back.vertices(int(t)) == tri.vertices(int(t)));
+    for(std::size_t t = 0; t < odd.size(); ++t) CHECK(odd.vertices(int(t)) == tri.vertices(int(2 * t + 1)));
+    // the filtered edge index: the kept edges with their indices, -1 for the others
+    const MWT::internal::Edge_index even(edges, p.size(), [](std::size_t e) { return e % 2 == 0; });
+    for(std::size_t e = 0; e < edges.size(); ++e) {
+      CHECK(even.find(edges[e].first, edges[e].second) == (e % 2 == 0 ? int(e) : -1));
+      CHECK(index.find(edges[e].second, edges[e].first) == int(e));
+    }
   }
 }
 

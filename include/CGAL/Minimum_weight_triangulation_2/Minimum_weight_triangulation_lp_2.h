@@ -27,6 +27,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -53,6 +54,22 @@ public:
   Minimum_weight_triangulation_lp_2(const std::vector<Point_2>& points, const Mwt_options& options = Mwt_options())
     : input_(points), pts_(input_), options_(options)
   {
+    initialize();
+  }
+
+  /// As above, taking the points over (no copy).
+  Minimum_weight_triangulation_lp_2(std::vector<Point_2>&& points, const Mwt_options& options = Mwt_options())
+    : input_(std::move(points)), pts_(input_), options_(options)
+  {
+    initialize();
+  }
+
+  Minimum_weight_triangulation_lp_2(const Minimum_weight_triangulation_lp_2&) = delete;
+  Minimum_weight_triangulation_lp_2& operator=(const Minimum_weight_triangulation_lp_2&) = delete;
+
+private:
+  void initialize()
+  {
     const auto t0 = Stage_clock::now();
     if(!options_.progress) options_.progress = [](const char*, double) { return true; };
     hull_ = internal::checked_hull_boundary(pts_);
@@ -70,9 +87,7 @@ public:
     stats_.time_setup = since(t0);
   }
 
-  Minimum_weight_triangulation_lp_2(const Minimum_weight_triangulation_lp_2&) = delete;
-  Minimum_weight_triangulation_lp_2& operator=(const Minimum_weight_triangulation_lp_2&) = delete;
-
+public:
   const std::vector<int>& hull() const { return hull_; }
   const std::vector<Edge>& candidate_edges() const { return edges_; }
   const Sparse_linear_program& linear_program() const { return lp_; }
@@ -96,12 +111,17 @@ public:
     edges_ = uses_diamond_test() ? internal::diamond_candidate_edges(pts_, *grid_, options_.progress)
                                  : internal::all_valid_edges(pts_, *grid_, options_.progress);
     // hull edges are always candidates (one side is empty); make sure of it
+    index_.reset();
     index_.reset(new internal::Edge_index(edges_, pts_.size()));
+    const std::size_t found = edges_.size();
     for(std::size_t i = 0; i < hull_.size(); ++i) {
       const int a = hull_[i], b = hull_[(i + 1) % hull_.size()];
       if(index_->find(a, b) < 0) edges_.emplace_back(std::min(a, b), std::max(a, b));
     }
-    index_.reset(new internal::Edge_index(edges_, pts_.size()));
+    if(edges_.size() != found) {
+      index_.reset();
+      index_.reset(new internal::Edge_index(edges_, pts_.size()));
+    }
     is_hull_.assign(edges_.size(), 0);
     for(std::size_t i = 0; i < hull_.size(); ++i) is_hull_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])] = 1;
     stats_.candidate_edges = edges_.size();
@@ -112,16 +132,24 @@ public:
   {
     if(!index_) compute_candidate_edges();
     const auto t0 = Stage_clock::now();
-    // a finer grid for the emptiness tests of small triangles (fewer points in a triangle's box)
-    internal::Point_grid_2 fine(pts_, 0.5);
-    auto all = internal::empty_triangles(pts_, fine, *index_, options_.progress);
+    internal::Triangle_set all = [&] {
+      // a finer grid for the emptiness tests of small triangles (fewer points in a triangle's box), freed after
+      internal::Point_grid_2 fine(pts_, 0.5);
+      return internal::empty_triangles(pts_, fine, *index_, edges_, options_.progress);
+    }();
     stats_.empty_triangles = all.size();
     stats_.time_triangles = since(t0);
     row_one_ = is_hull_;
     fixed_edge_.assign(edges_.size(), 0);
     fixed_.clear();
-    if(options_.use_lmt_skeleton) all = lmt_and_face_dp(all);
-    triangles_ = internal::remove_unusable_triangles(all, row_one_);
+    if(options_.use_lmt_skeleton) triangles_ = internal::remove_unusable_triangles(lmt_and_face_dp(all), row_one_);
+    else {
+      std::vector<internal::Lp_triangle> v;
+      v.reserve(all.size());
+      for(std::size_t t = 0; t < all.size(); ++t) v.push_back(all.triangle(int(t)));
+      all = internal::Triangle_set(edges_);
+      triangles_ = internal::remove_unusable_triangles(v, row_one_);
+    }
     triangles_done_ = true;
   }
 
@@ -156,7 +184,7 @@ public:
       double val[3];
       for(int i = 0; i < 3; ++i) {
         rows[i] = row_of_edge_[t.edge[i]];
-        val[i] = row_one_[t.edge[i]] ? 1.0 : double(t.side[i]);
+        val[i] = row_one_[t.edge[i]] ? 1.0 : double(t.side(i));
       }
       lp_.add_column(triangle_cost(t) / scale_, 0, Sparse_linear_program::infinity(), rows, val, 3);
     }
@@ -281,12 +309,12 @@ public:
       return s;
     }
     double s = 0;
-    Interval I(0);
+    Blocked_interval_sum I;
     for(const auto& ed : e) {
       s += length(ed.first, ed.second);
-      I += interval_length(ed.first, ed.second);
+      I.add(interval_length(ed.first, ed.second));
     }
-    if(upper) *upper = I.sup();
+    if(upper) *upper = I.value().sup();
     return s;
   }
 
@@ -304,6 +332,22 @@ private:
 #endif
   typedef CGAL::Interval_nt<true> Interval;
 
+  // Interval sum of many terms, in blocks of 4096: the outward rounding of an addition grows with the partial
+  // sum, so one running sum of the 3 * 10^7 edge lengths of a triangulation of 10^7 points widens by about
+  // up to n u |sum| (measured: 1.2e-9 relative, more than the certificate tolerance 1e-9); with blocks by
+  // about (4096 + n / 4096) u |sum| (about 1e-12 relative).
+  struct Blocked_interval_sum
+  {
+    Interval total = Interval(0), block = Interval(0);
+    int count = 0;
+    void add(const Interval& x)
+    {
+      block += x;
+      if(++count == 4096) { total += block; block = Interval(0); count = 0; }
+    }
+    Interval value() const { return total + block; }
+  };
+
   Mwt_result finish(Mwt_result& r)
   {
     stats_.time_total = stats_.time_setup + stats_.time_candidates + stats_.time_triangles + stats_.time_lmt + stats_.time_face_dp + stats_.time_lp_build + stats_.time_lp_solve +
@@ -313,14 +357,19 @@ private:
   }
 
   // LMT-skeleton, then the dynamic program on the simple faces of its certain edges; returns the triangles
-  // left for the LP: those of the solved faces as chosen by the program, all possible ones elsewhere.
-  std::vector<internal::Lp_triangle> lmt_and_face_dp(const std::vector<internal::Lp_triangle>& all)
+  // left for the LP: those of the solved faces as chosen by the program, all possible ones elsewhere. `all`
+  // (every empty triangle) is released. Memory: the edge index is not needed by the skeleton and is rebuilt
+  // after it; the face programs see the live triangles only (no impossible edge), in the same order.
+  std::vector<internal::Lp_triangle> lmt_and_face_dp(internal::Triangle_set& all)
   {
     if(options_.metric != Edge_metric::L2 || options_.triangle_weight)
       throw std::invalid_argument("minimum_weight_triangulation_2: the LMT-skeleton is implemented for the Euclidean metric only");
     auto t0 = Stage_clock::now();
-    const internal::Edge_triangles by_edge(all, edges_.size());
-    lmt_state_ = internal::lmt_skeleton(pts_, edges_, all, by_edge, is_hull_, options_.progress);
+    index_.reset();
+    {
+      const internal::Edge_triangles by_edge(all, edges_.size());
+      lmt_state_ = internal::lmt_skeleton(pts_, edges_, all, by_edge, is_hull_, options_.progress);
+    }
     for(char c : lmt_state_) {
       if(c == internal::lmt_certain) ++stats_.lmt_certain_edges;
       if(c == internal::lmt_possible) ++stats_.lmt_possible_edges;
@@ -328,22 +377,32 @@ private:
     stats_.time_lmt = since(t0);
     if(!options_.progress("face dynamic program", 0)) throw CGAL::MDCS::Operation_cancelled("face dynamic program");
     t0 = Stage_clock::now();
+    all.compact([&](int t) {
+      const auto& te = all.edges(t);
+      return lmt_state_[te[0]] != internal::lmt_impossible && lmt_state_[te[1]] != internal::lmt_impossible &&
+             lmt_state_[te[2]] != internal::lmt_impossible;
+    });
+    // the index of the edges that are not impossible: all that the face programs and the LP rows look up
+    index_.reset(new internal::Edge_index(edges_, pts_.size(),
+                                          [&](std::size_t e) { return lmt_state_[e] != internal::lmt_impossible; }));
+    const internal::Edge_triangles by_edge(all, edges_.size());
     internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, all, by_edge, lmt_state_);
     // the faces solved by the program leave the LP; their edges shared with other faces become rows "= 1";
     // the LP keeps the triangles without an impossible edge in the other faces
     std::vector<internal::Lp_triangle> out;
     for(int t : dp.dp_triangles()) {
-      fixed_.push_back(all[t].v);
-      for(int i = 0; i < 3; ++i) row_one_[all[t].edge[i]] = fixed_edge_[all[t].edge[i]] = 1;
+      fixed_.push_back(all.vertices(t));
+      for(int i = 0; i < 3; ++i) row_one_[all.edge(t, i)] = fixed_edge_[all.edge(t, i)] = 1;
     }
     for(std::size_t t = 0; t < all.size(); ++t)
-      if(dp.is_live(int(t)) && !dp.in_solved_face(int(t))) out.push_back(all[t]);
+      if(dp.is_live(int(t)) && !dp.in_solved_face(int(t))) out.push_back(all.triangle(int(t)));
     stats_.lmt_faces = dp.number_of_faces();
     stats_.lmt_solved_faces = dp.number_of_solved_faces();
     stats_.dp_triangles = dp.dp_triangles().size();
     stats_.lmt_largest_face = dp.largest_face();
     stats_.dp_exact_faces = dp.number_of_exact_faces();
     stats_.dp_exact_decisions = dp.number_of_exact_decisions();
+    all = internal::Triangle_set(edges_);
     stats_.time_face_dp = since(t0);
     return out;
   }
@@ -352,10 +411,10 @@ private:
   double fixed_weight_lower_bound() const
   {
     if(fixed_.empty()) return 0;
-    Interval I(0);
+    Blocked_interval_sum I;
     for(std::size_t e = 0; e < edges_.size(); ++e)
-      if(fixed_edge_[e] && (row_of_edge_.empty() || row_of_edge_[e] < 0)) I += interval_length(edges_[e].first, edges_[e].second);
-    return I.inf();
+      if(fixed_edge_[e] && (row_of_edge_.empty() || row_of_edge_[e] < 0)) I.add(interval_length(edges_[e].first, edges_[e].second));
+    return I.value().inf();
   }
 
   // Every face solved by the dynamic program: no LP; the triangulation is validated exactly.
@@ -490,10 +549,11 @@ private:
     for(std::size_t j = 0; j < triangles_.size(); ++j)
       if(x[j] > 0.5 || lo[j] <= tau) Z.push_back(triangles_[j]);
     // the LMT-skeleton on the triangles of Z: an MWT inside Z is locally minimal with triangles of Z
-    const internal::Edge_triangles by_edge(Z, edges_.size());
+    const internal::Triangle_set Zs(edges_, Z);
+    const internal::Edge_triangles by_edge(Zs, edges_.size());
     std::function<bool(const char*, double)> progress = options_.progress;
-    const std::vector<char> state = internal::lmt_skeleton(pts_, edges_, Z, by_edge, is_hull_, progress);
-    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, Z, by_edge, state);
+    const std::vector<char> state = internal::lmt_skeleton(pts_, edges_, Zs, by_edge, is_hull_, progress);
+    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, Zs, by_edge, state);
     if(dp.number_of_solved_faces() + 1 != dp.number_of_faces()) return 0;   // all but the outer face
     std::vector<internal::Length_segment> A, B;
     std::vector<std::pair<int, int>> ea, eb;

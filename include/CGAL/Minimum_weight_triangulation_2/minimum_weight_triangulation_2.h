@@ -19,6 +19,7 @@
 #include <ctime>
 #include <iterator>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -59,7 +60,6 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
 {
   typedef typename std::iterator_traits<decltype(std::begin(points))>::value_type Point_2;
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel Kernel;
-  std::vector<Point_2> input(std::begin(points), std::end(points));
   // The stages run on the points in Hilbert order (locality of the grids and of every per-point array); the
   // triangles are mapped back to the input indices. Bad input is reported with the input indices.
   std::vector<int> order;
@@ -68,15 +68,19 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
 #else
   const auto t0 = std::chrono::steady_clock::now();
 #endif
-  try {
-    order = internal::hilbert_order(input);
-  } catch(const std::invalid_argument&) {
-    internal::Indexed_points_2<Kernel> ip(input);
-    internal::checked_hull_boundary(ip);   // throws with the input indices
-    throw;
-  }
-  std::vector<Point_2> p(input.size());
-  for(std::size_t i = 0; i < order.size(); ++i) p[i] = input[std::size_t(order[i])];
+  std::vector<Point_2> p;
+  {
+    const std::vector<Point_2> input(std::begin(points), std::end(points));
+    try {
+      order = internal::hilbert_order(input);
+    } catch(const std::invalid_argument&) {
+      internal::Indexed_points_2<Kernel> ip(input);
+      internal::checked_hull_boundary(ip);   // throws with the input indices
+      throw;
+    }
+    p.resize(input.size());
+    for(std::size_t i = 0; i < order.size(); ++i) p[i] = input[std::size_t(order[i])];
+  }   // the copy in input order is released: the stages hold the points once (moved below)
 #if defined(MDCS_MWT_CPU_TIMERS)
   const double sort_time = double(std::clock()) / CLOCKS_PER_SEC - t0;
 #else
@@ -84,12 +88,13 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
 #endif
   Mwt_result r;
   try {
-    Minimum_weight_triangulation_lp_2<Kernel> mwt(p, options);
+    Minimum_weight_triangulation_lp_2<Kernel> mwt(std::move(p), options);   // no second copy of the points
     mwt.compute_candidate_edges();
     mwt.compute_empty_triangles();
     mwt.build_linear_program();
     r = mwt.solve(solver, binary_solver);
   } catch(const std::invalid_argument&) {
+    const std::vector<Point_2> input(std::begin(points), std::end(points));
     internal::Indexed_points_2<Kernel> ip(input);
     internal::checked_hull_boundary(ip);   // input errors again, with the input indices
     throw;

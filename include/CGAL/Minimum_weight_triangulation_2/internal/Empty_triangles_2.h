@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <unordered_map>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -26,7 +26,71 @@ struct Lp_triangle
 {
   std::array<int, 3> v;      // counter-clockwise
   std::array<int, 3> edge;   // edge[i] joins v[i] and v[(i+1)%3]
-  std::array<int, 3> side;   // +1: the triangle lies left of its edge (lower index -> higher index)
+  /// +1: the triangle lies left of its edge i (lower index -> higher index), -1: right
+  int side(int i) const { return v[i] < v[(i + 1) % 3] ? 1 : -1; }
+};
+
+/*!
+  Triangles stored by their three edges only (12 bytes each, the empty triangles are about 30 per point): edge i
+  joins the vertices i and i + 1 of the counter-clockwise triangle, so vertex i is the common endpoint of the
+  edges i - 1 and i. `edges` (the candidate edges, first < second) must outlive the set.
+*/
+class Triangle_set
+{
+public:
+  explicit Triangle_set(const std::vector<Edge>& edges) : edges_(&edges) {}
+  Triangle_set(const std::vector<Edge>& edges, const std::vector<Lp_triangle>& tri) : edges_(&edges)
+  {
+    e_.reserve(tri.size());
+    for(const auto& t : tri) e_.push_back(t.edge);
+  }
+
+  std::size_t size() const { return e_.size(); }
+  void reserve(std::size_t n) { e_.reserve(n); }
+  void push_back(int e0, int e1, int e2) { e_.push_back(std::array<int, 3>{{e0, e1, e2}}); }
+  int edge(int t, int i) const { return e_[std::size_t(t)][std::size_t(i)]; }
+  const std::array<int, 3>& edges(int t) const { return e_[std::size_t(t)]; }
+  /// Vertex i (counter-clockwise): the common endpoint of the edges i - 1 and i.
+  int vertex(int t, int i) const
+  {
+    const Edge& a = (*edges_)[std::size_t(e_[std::size_t(t)][std::size_t((i + 2) % 3)])];
+    const Edge& b = (*edges_)[std::size_t(e_[std::size_t(t)][std::size_t(i)])];
+    return (b.first == a.first || b.first == a.second) ? b.first : b.second;
+  }
+  /// +1: the triangle lies left of its edge i (lower index -> higher index), -1: right.
+  int side(int t, int i) const
+  {
+    const Edge& a = (*edges_)[std::size_t(e_[std::size_t(t)][std::size_t((i + 2) % 3)])];
+    const int lo = (*edges_)[std::size_t(e_[std::size_t(t)][std::size_t(i)])].first;
+    return (lo == a.first || lo == a.second) ? 1 : -1;
+  }
+  /// The vertex of triangle t opposite to its edge e (e must be one of its edges).
+  int apex(int t, int e) const
+  {
+    const auto& te = e_[std::size_t(t)];
+    const int i = te[0] == e ? 0 : (te[1] == e ? 1 : 2);
+    const Edge& d = (*edges_)[std::size_t(e)];
+    const Edge& f = (*edges_)[std::size_t(te[std::size_t((i + 1) % 3)])];
+    return (f.first == d.first || f.first == d.second) ? f.second : f.first;
+  }
+  std::array<int, 3> vertices(int t) const { return {{vertex(t, 0), vertex(t, 1), vertex(t, 2)}}; }
+  Lp_triangle triangle(int t) const { return Lp_triangle{vertices(t), e_[std::size_t(t)]}; }
+  /// Keeps the triangles t with keep(t) (in order) and releases the memory of the others.
+  template <class Keep>
+  void compact(Keep keep)
+  {
+    std::size_t count = 0;
+    for(std::size_t t = 0; t < e_.size(); ++t) count += keep(int(t)) ? 1 : 0;
+    std::vector<std::array<int, 3>> kept;
+    kept.reserve(count);
+    for(std::size_t t = 0; t < e_.size(); ++t)
+      if(keep(int(t))) kept.push_back(e_[t]);
+    e_.swap(kept);
+  }
+
+private:
+  const std::vector<Edge>* edges_;
+  std::vector<std::array<int, 3>> e_;
 };
 
 /// The candidate edges as a compressed adjacency: for every vertex its neighbours in increasing order with the
@@ -36,13 +100,23 @@ class Edge_index
 public:
   struct Entry { int v, edge; };
 
-  explicit Edge_index(const std::vector<Edge>& edges, std::size_t n) : start_(n + 1, 0)
+  explicit Edge_index(const std::vector<Edge>& edges, std::size_t n)
+    : Edge_index(edges, n, [](std::size_t) { return true; })
+  {}
+
+  /// The index of the edges i with keep(i) only (find() gives -1 for the others).
+  template <class Keep>
+  Edge_index(const std::vector<Edge>& edges, std::size_t n, Keep keep) : start_(n + 1, 0)
   {
-    for(const Edge& e : edges) { ++start_[std::size_t(e.first) + 1]; ++start_[std::size_t(e.second) + 1]; }
+    if(2 * edges.size() >= std::size_t(UINT32_MAX))
+      throw std::length_error("minimum_weight_triangulation_2: too many candidate edges for 32-bit indices");
+    for(std::size_t i = 0; i < edges.size(); ++i)
+      if(keep(i)) { ++start_[std::size_t(edges[i].first) + 1]; ++start_[std::size_t(edges[i].second) + 1]; }
     for(std::size_t v = 1; v <= n; ++v) start_[v] += start_[v - 1];
     nbr_.resize(start_[n]);
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
     for(std::size_t i = 0; i < edges.size(); ++i) {
+      if(!keep(i)) continue;
       nbr_[fill[std::size_t(edges[i].first)]++] = Entry{edges[i].second, int(i)};
       nbr_[fill[std::size_t(edges[i].second)]++] = Entry{edges[i].first, int(i)};
     }
@@ -66,17 +140,19 @@ public:
   std::size_t degree_sum() const { return nbr_.size(); }
 
 private:
-  std::vector<std::size_t> start_;
+  std::vector<std::uint32_t> start_;   // 32 bits: half the memory of size_t (at most 2^32 - 1 entries, checked)
   std::vector<Entry> nbr_;
 };
 
-/// Every empty triangle whose sides are candidate edges (exact orientations).
+/// Every empty triangle whose sides are candidate edges (exact orientations), by edges (`edges`: the
+/// candidate edges of `index`).
 template <class P, class Progress>
-std::vector<Lp_triangle> empty_triangles(const P& pts, const Point_grid_2& grid, const Edge_index& index, Progress& progress)
+Triangle_set empty_triangles(const P& pts, const Point_grid_2& grid, const Edge_index& index,
+                             const std::vector<Edge>& edges, Progress& progress)
 {
   const int n = int(pts.size());
   std::vector<int> mark(std::size_t(n), -1), mark_edge(std::size_t(n), -1);
-  std::vector<Lp_triangle> out;
+  Triangle_set out(edges);
   out.reserve(index.degree_sum() / 2 * 27 / 10 + 16);   // about 2.6 triangles per edge on uniform points
   CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "empty triangles", std::size_t(n));
   for(int a = 0; a < n; ++a) {
@@ -98,18 +174,9 @@ std::vector<Lp_triangle> empty_triangles(const P& pts, const Point_grid_2& grid,
                  pts.orientation(c, a, r, rx, ry) == o;
         });
         if(occupied) continue;
-        // sides ab, bc, ca; counter-clockwise (a, b, c) or (a, c, b); side +1: the triangle lies left of lower -> higher
-        Lp_triangle t;
-        if(o > 0) {
-          t.v = {{a, b, c}};
-          t.edge = {{eb->edge, ec->edge, mark_edge[c]}};
-          t.side = {{1, 1, -1}};
-        } else {
-          t.v = {{a, c, b}};
-          t.edge = {{mark_edge[c], ec->edge, eb->edge}};
-          t.side = {{1, -1, -1}};
-        }
-        out.push_back(t);
+        // counter-clockwise (a, b, c) with the sides ab, bc, ca, or (a, c, b) with ac, cb, ba
+        if(o > 0) out.push_back(eb->edge, ec->edge, mark_edge[c]);
+        else out.push_back(mark_edge[c], ec->edge, eb->edge);
       }
     }
   }
@@ -124,12 +191,20 @@ inline std::vector<Lp_triangle> remove_unusable_triangles(const std::vector<Lp_t
 {
   const std::size_t m = is_hull.size();
   std::vector<std::array<int, 2>> count(m, {0, 0});
-  std::vector<std::vector<int>> on_edge(m);
-  for(std::size_t t = 0; t < tri.size(); ++t)
-    for(int i = 0; i < 3; ++i) {
-      ++count[tri[t].edge[i]][tri[t].side[i] > 0 ? 0 : 1];
-      on_edge[tri[t].edge[i]].push_back(int(t));
-    }
+  // the triangles of every edge as a compressed array
+  std::vector<std::size_t> start(m + 1, 0);
+  for(const auto& t : tri)
+    for(int i = 0; i < 3; ++i) ++start[std::size_t(t.edge[i]) + 1];
+  for(std::size_t e = 1; e <= m; ++e) start[e] += start[e - 1];
+  std::vector<int> on_edge(start[m]);
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t t = 0; t < tri.size(); ++t)
+      for(int i = 0; i < 3; ++i) {
+        ++count[tri[t].edge[i]][tri[t].side(i) > 0 ? 0 : 1];
+        on_edge[fill[std::size_t(tri[t].edge[i])]++] = int(t);
+      }
+  }
   std::vector<char> alive(tri.size(), 1);
   std::vector<int> queue;
   for(std::size_t e = 0; e < m; ++e)
@@ -137,14 +212,15 @@ inline std::vector<Lp_triangle> remove_unusable_triangles(const std::vector<Lp_t
   while(!queue.empty()) {
     const int e = queue.back();
     queue.pop_back();
-    for(int t : on_edge[e]) {
+    for(std::size_t k = start[std::size_t(e)]; k < start[std::size_t(e) + 1]; ++k) {
+      const int t = on_edge[k];
       if(!alive[t]) continue;
       alive[t] = 0;
       for(int i = 0; i < 3; ++i) {
         const int f = tri[t].edge[i];
-        int& c = count[f][tri[t].side[i] > 0 ? 0 : 1];
+        int& c = count[f][tri[t].side(i) > 0 ? 0 : 1];
         --c;
-        if(c == 0 && !is_hull[f] && count[f][tri[t].side[i] > 0 ? 1 : 0] > 0) queue.push_back(f);
+        if(c == 0 && !is_hull[f] && count[f][tri[t].side(i) > 0 ? 1 : 0] > 0) queue.push_back(f);
       }
     }
   }

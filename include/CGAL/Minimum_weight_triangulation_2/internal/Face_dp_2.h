@@ -37,7 +37,7 @@ public:
   /// `state`: the result of lmt_skeleton(); `tri`: the empty triangles (those with an impossible edge are
   /// ignored), `by_edge` their lists per edge; `max_face`: larger faces go to the LP (the programs take O(m^3)
   /// time, O(m^2) memory).
-  Face_dp_2(const P& pts, const std::vector<Edge>& edges, const Edge_index& index, const std::vector<Lp_triangle>& tri,
+  Face_dp_2(const P& pts, const std::vector<Edge>& edges, const Edge_index& index, const Triangle_set& tri,
             const Edge_triangles& by_edge, const std::vector<char>& state, std::size_t max_face = 400)
     : pts_(pts), edges_(edges), index_(index), tri_(tri), state_(state), n_(int(pts.size())), by_edge_(by_edge),
       nbr_start_(std::size_t(n_) + 1, 0)
@@ -66,7 +66,7 @@ public:
     for(std::size_t t = 0; t < tri.size(); ++t)
       for(int r = 0; r < 3; ++r) {
         if(!is_live(int(t))) break;
-        const int u = tri[t].v[r];
+        const int u = tri.vertex(int(t), r);
         if(nbr_start_[u] != nbr_start_[u + 1] || located[u]) continue;
         const int f = face_of(int(t));
         if(f < 0) continue;
@@ -98,8 +98,8 @@ public:
   /// Whether no edge of triangle t is impossible.
   bool is_live(int t) const
   {
-    return state_[tri_[t].edge[0]] != lmt_impossible && state_[tri_[t].edge[1]] != lmt_impossible &&
-           state_[tri_[t].edge[2]] != lmt_impossible;
+    const auto& te = tri_.edges(t);
+    return state_[te[0]] != lmt_impossible && state_[te[1]] != lmt_impossible && state_[te[2]] != lmt_impossible;
   }
 
   /// Whether triangle t (all of its edges possible) lies in a face solved by the dynamic program.
@@ -121,7 +121,7 @@ private:
   int face_of(int t) const
   {
     for(int r = 0; r < 3; ++r) {
-      const int u = tri_[t].v[r], v = tri_[t].v[(r + 1) % 3];
+      const int u = tri_.vertex(t, r), v = tri_.vertex(t, (r + 1) % 3);
       const std::size_t b0 = nbr_start_[u], b1 = nbr_start_[u + 1];
       if(b0 == b1) continue;
       // the last certain neighbour x at or before direction u->v in counter-clockwise order
@@ -197,10 +197,8 @@ private:
     // (a, b, c) counter-clockwise lies left of a -> b: side 0 of the edge when a < b, side 1 otherwise
     const int s = a < b ? 0 : 1;
     for(const int* t = by_edge_.begin(e, s); t != by_edge_.end(e, s); ++t) {
-      const Lp_triangle& T = tri_[*t];
-      if(T.v[0] != c && T.v[1] != c && T.v[2] != c) continue;
-      if(state_[T.edge[0]] == lmt_impossible || state_[T.edge[1]] == lmt_impossible || state_[T.edge[2]] == lmt_impossible) return -1;
-      return *t;
+      if(tri_.apex(*t, e) != c) continue;   // c differs from a and b
+      return is_live(*t) ? *t : -1;
     }
     return -1;
   }
@@ -413,7 +411,7 @@ private:
   const P& pts_;
   const std::vector<Edge>& edges_;
   const Edge_index& index_;
-  const std::vector<Lp_triangle>& tri_;
+  const Triangle_set& tri_;
   const std::vector<char>& state_;
   int n_;
   const Edge_triangles& by_edge_;

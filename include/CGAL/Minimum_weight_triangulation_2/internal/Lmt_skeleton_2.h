@@ -17,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -53,26 +55,28 @@ bool properly_cross(const P& pts, int a, int b, int c, int d)
 }
 
 /// Triangles by edge and side: for edge e and side s (0: left of lower -> higher index, 1: right), the
-/// triangles at(e, s) as a compressed array.
+/// triangles at(e, s) as a compressed array (32-bit offsets: 3 entries per triangle, at most 2^32 - 1).
 class Edge_triangles
 {
 public:
-  Edge_triangles(const std::vector<Lp_triangle>& tri, std::size_t m) : start_(2 * m + 1, 0)
+  Edge_triangles(const Triangle_set& tri, std::size_t m) : start_(2 * m + 1, 0)
   {
-    for(const auto& t : tri)
-      for(int i = 0; i < 3; ++i) ++start_[slot(t.edge[i], t.side[i]) + 1];
+    if(3 * tri.size() >= std::size_t(UINT32_MAX))
+      throw std::length_error("minimum_weight_triangulation_2: too many empty triangles for 32-bit indices");
+    for(std::size_t t = 0; t < tri.size(); ++t)
+      for(int i = 0; i < 3; ++i) ++start_[slot(tri.edge(int(t), i), tri.side(int(t), i)) + 1];
     for(std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
     item_.resize(start_.back());
-    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
     for(std::size_t t = 0; t < tri.size(); ++t)
-      for(int i = 0; i < 3; ++i) item_[fill[slot(tri[t].edge[i], tri[t].side[i])]++] = int(t);
+      for(int i = 0; i < 3; ++i) item_[fill[slot(tri.edge(int(t), i), tri.side(int(t), i))]++] = int(t);
   }
   const int* begin(int e, int s) const { return item_.data() + start_[2 * std::size_t(e) + std::size_t(s)]; }
   const int* end(int e, int s) const { return item_.data() + start_[2 * std::size_t(e) + std::size_t(s) + 1]; }
 
 private:
   static std::size_t slot(int e, int side) { return 2 * std::size_t(e) + (side > 0 ? 0 : 1); }
-  std::vector<std::size_t> start_;
+  std::vector<std::uint32_t> start_;
   std::vector<int> item_;
 };
 
@@ -82,28 +86,30 @@ private:
   (always certain).
 */
 template <class P, class Progress>
-std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, const std::vector<Lp_triangle>& tri,
+std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, const Triangle_set& tri,
                                const Edge_triangles& by_edge, const std::vector<char>& is_hull, Progress& progress)
 {
   const std::size_t m = edges.size();
   std::vector<char> alive(m, 1), queued(m, 1);
-  auto tri_alive = [&](int t) { return alive[tri[t].edge[0]] && alive[tri[t].edge[1]] && alive[tri[t].edge[2]]; };
-  auto apex = [&](int t, int e) {
-    for(int i = 0; i < 3; ++i)
-      if(tri[t].edge[i] == e) return tri[t].v[(i + 2) % 3];
-    return -1;
+  auto tri_alive = [&](int t) {
+    const auto& te = tri.edges(t);
+    return alive[te[0]] && alive[te[1]] && alive[te[2]];
   };
+  auto apex = [&](int t, int e) { return tri.apex(t, e); };
   // an interior edge keeps a witness: a live triangle on each side with a non-convex quadrilateral or |ab| <= |cd|
   // (c is strictly left and d strictly right of ab, so acbd is strictly convex iff cd crosses the line ab
   // between a and b)
+  std::vector<int> right_apex;   // the apexes of the live triangles right of the edge (computed once per edge)
   auto has_witness = [&](int e) {
     const int a = edges[e].first, b = edges[e].second;
+    right_apex.clear();
+    for(const int* t2 = by_edge.begin(e, 1); t2 != by_edge.end(e, 1); ++t2)
+      if(tri_alive(*t2)) right_apex.push_back(apex(*t2, e));
+    if(right_apex.empty()) return false;
     for(const int* t1 = by_edge.begin(e, 0); t1 != by_edge.end(e, 0); ++t1) {
       if(!tri_alive(*t1)) continue;
       const int c = apex(*t1, e);
-      for(const int* t2 = by_edge.begin(e, 1); t2 != by_edge.end(e, 1); ++t2) {
-        if(!tri_alive(*t2)) continue;
-        const int d = apex(*t2, e);
+      for(const int d : right_apex) {
         if(not_longer(pts, a, b, c, d)) return true;
         if(pts.orientation(c, d, a) * pts.orientation(c, d, b) >= 0) return true;   // acbd not strictly convex: no flip
       }
@@ -111,6 +117,7 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
     return false;
   };
   std::vector<int> work;
+  work.reserve(m);   // never more than m entries (queued): no growth by doubling
   for(std::size_t e = 0; e < m; ++e)
     if(!is_hull[e]) work.push_back(int(e));
     else queued[e] = 0;
@@ -127,12 +134,13 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
     for(int s = 0; s < 2; ++s)
       for(const int* tp = by_edge.begin(e, s); tp != by_edge.end(e, s); ++tp)
         for(int i = 0; i < 3; ++i) {
-          const int t = *tp;
-          const int f = tri[t].edge[i];
+          const int f = tri.edge(*tp, i);
           if(alive[f] && !is_hull[f] && !queued[f]) { queued[f] = 1; work.push_back(f); }
         }
   }
   report.finish();
+  std::vector<int>().swap(work);       // release before the crossing tests (memory peak of the pipeline)
+  std::vector<char>().swap(queued);
 
   // certain: alive and crossed by no other alive edge (edges bucketed in a grid by bounding box)
   std::vector<char> state(m, lmt_impossible);
