@@ -10,13 +10,17 @@
 //
 //   bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3] [--csv-prefix PATH]
 //                   [--blob-runs N] [--blob-first SEED] [--blob-starts N] [--blob-rounds R] [--blob-planes N]
-//                   [--blob-near F] [--jobs J]
+//                   [--blob-near F] [--blob-search] [--no-global] [--blob-best E] [--blob-shift S]
+//                   [--blob-tilings T1,T2,...] [--jobs J]
 //
 // --budget (default 60): part 1 stops growing once one row took longer than this (build + weights + cuts).
 // --large: part 1 goes on to about 3M cells (the goal sizes of issue 6) whatever the budget.
 // Part 3: N global runs (seeds SEED..SEED+N-1, default 8 from 100), N local descents (default 100), plane selection
 // with N planes x R rounds (default 160 x 6; --blob-near F: a share F of the redrawn planes near the optimum);
-// --jobs J runs them on J threads (each run single-threaded; the peak
+// --blob-search: plane selection by select_planes_relaxed_3 (every round relaxed, then the basin search of
+// search_surface_basins_3 on the final arrangement; the plain columns are the same run before the search);
+// --blob-shift, --blob-tilings: the search's options (default 0.1 and 3,4); --blob-best E: a best energy known
+// from earlier runs, for "reaches the best"; --no-global: skip the one-solve global runs; --jobs J runs them on J threads (each run single-threaded; the peak
 // memory column is then not measured).
 // CSV files: PATH_table22.csv, PATH_scherk.csv, PATH_blobs.csv (default PATH: surface).
 
@@ -27,6 +31,7 @@
 #include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
+#include <CGAL/Variational_minimization/search_surface_basins_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
 #include <CGAL/Variational_minimization/surface_facet_weights_3.h>
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
@@ -261,6 +266,11 @@ struct Blob_settings
   long planes_global = 200;
   int jobs = 1;            // runs in parallel threads (each single-threaded); peak memory only with 1
   double near = 0;         // plane selection: share of the redrawn planes near the optimum (selection_near_fraction)
+  bool search = false;     // basin search after plane selection (select_planes_relaxed_3)
+  bool global = true;      // the one-solve global runs
+  double known_best = NAN; // --blob-best E: a best energy known from earlier runs (for "reaches best")
+  double search_shift = 0.1;              // --blob-shift: Surface_basin_search_options_3::shift
+  std::vector<int> search_tilings{3, 4};  // --blob-tilings 3,4: Surface_basin_search_options_3::tilings
 };
 
 // One global run of the blob problem: one solve, and plane selection whose every distinct round optimum is relaxed.
@@ -271,6 +281,8 @@ struct Blob_run
   double selection_discrete = 0, selection_final_relaxed = 0, selection_relaxed = 0, selection_seconds = 0,
          selection_peak = -1;
   int selection_best_round = 0, relaxed_rounds = 0;
+  double search_relaxed = NAN, search_seconds = NAN; // basin search: energy, seconds after plane selection
+  std::size_t search_moves = 0, search_improvements = 0;
 };
 
 template <class Functional>
@@ -287,7 +299,7 @@ Blob_run blob_run(const VM::Surface_problem_3& P, const Functional& G, const Blo
   double rss0 = 0;
   if(memory) { release_memory(); mdcs_bench::reset_peak_rss(); rss0 = mdcs_bench::current_rss_mib(); }
   double t0 = mdcs_bench::now_seconds();
-  {
+  if(b.global) {
     const VM::Plane_arrangement_3 A(VM::surface_planes_3(P, std::size_t(b.planes_global), o));
     const VM::Minimal_surface_3 s = VM::minimize_surface_functional_3(A, P, G);
     out.global_cells = A.number_of_cells();
@@ -298,6 +310,37 @@ Blob_run blob_run(const VM::Surface_problem_3& P, const Functional& G, const Blo
   if(memory) { out.global_peak = mdcs_bench::peak_rss_mib() - rss0; release_memory(); mdcs_bench::reset_peak_rss();
                rss0 = mdcs_bench::current_rss_mib(); }
   t0 = mdcs_bench::now_seconds();
+  if(b.search) {
+    double search_start = 0;
+    auto mark = [&](const char* stage, double) {
+      if(search_start == 0 && std::string(stage) == "basin search") search_start = mdcs_bench::now_seconds();
+      return true;
+    };
+    VM::Surface_basin_search_options_3 so;
+    so.relaxation = ro;
+    so.shift = b.search_shift;
+    so.tilings = b.search_tilings;
+    const VM::Relaxed_plane_selection_result_3 R = VM::select_planes_relaxed_3(
+      P, G, std::size_t(b.planes_select), b.rounds, o, so, CGAL::Min_cut::Default_max_flow_engine(), mark);
+    const double t1 = mdcs_bench::now_seconds();
+    out.selection_cells = R.selection.cells.back();
+    out.selection_discrete = R.selection.surface.energy;
+    out.selection_relaxed = std::numeric_limits<double>::infinity();
+    std::vector<double> seen;
+    for(std::size_t i = 0; i < R.round_relaxed_energies.size(); ++i) {
+      const double d = R.selection.surfaces[i].energy, e = R.round_relaxed_energies[i];
+      if(std::find(seen.begin(), seen.end(), d) == seen.end()) { seen.push_back(d); ++out.relaxed_rounds; }
+      if(d == R.selection.surface.energy) out.selection_final_relaxed = e;
+      if(e < out.selection_relaxed) { out.selection_relaxed = e; out.selection_best_round = int(i); }
+    }
+    out.search_relaxed = R.search.relaxed.energy;
+    out.search_moves = R.search.moves;
+    out.search_improvements = R.search.improvements;
+    out.search_seconds = t1 - (search_start > 0 ? search_start : t1);
+    out.selection_seconds = (search_start > 0 ? search_start : t1) - t0;
+    if(memory) out.selection_peak = mdcs_bench::peak_rss_mib() - rss0;
+    return out;
+  }
   const VM::Plane_selection_result_3 sel = VM::select_planes_3(P, G, std::size_t(b.planes_select), b.rounds, o);
   out.selection_cells = sel.cells.back();
   out.selection_discrete = sel.surface.energy;
@@ -376,15 +419,18 @@ void part_blobs(bool quick, const std::string& prefix, Blob_settings b)
   for(double t : local_seconds) t_local += t;
   const double best_local = local.empty() ? std::numeric_limits<double>::infinity()
                                           : *std::min_element(local.begin(), local.end());
-  std::vector<double> global, selection, selection_final;
+  std::vector<double> global, selection, selection_final, search;
   for(const Blob_run& x : runs) {
-    global.push_back(x.global_relaxed);
+    if(b.global) global.push_back(x.global_relaxed);
     selection.push_back(x.selection_relaxed);
     selection_final.push_back(x.selection_final_relaxed);
+    if(b.search) search.push_back(x.search_relaxed);
   }
   double best = best_local;
+  if(b.known_best > 0) best = std::min(best, b.known_best);
   for(double e : global) best = std::min(best, e);
   for(double e : selection) best = std::min(best, e);
+  for(double e : search) best = std::min(best, e);
   auto reaches = [&](double e) { return e <= best * (1 + 1e-4); };
   auto hits = [&](const std::vector<double>& v) {
     std::size_t c = 0;
@@ -400,6 +446,7 @@ void part_blobs(bool quick, const std::string& prefix, Blob_settings b)
   for(std::size_t r = 0; r < runs.size(); ++r) {
     const Blob_run& x = runs[r];
     const std::string seed = std::to_string(b.first + int(r));
+    if(b.global)
     table.add_row({"global (one solve)", std::to_string(r), seed, std::to_string(b.planes_global),
                    std::to_string(x.global_cells), fmt(x.global_discrete, "%.8g"), fmt(x.global_relaxed, "%.8g"), "-",
                    "-", reaches(x.global_relaxed) ? "yes" : "no", fmt(x.global_seconds),
@@ -410,6 +457,13 @@ void part_blobs(bool quick, const std::string& prefix, Blob_settings b)
                    std::to_string(x.selection_best_round) + " (" + std::to_string(x.relaxed_rounds) + " relaxed)",
                    reaches(x.selection_relaxed) ? "yes" : "no", fmt(x.selection_seconds),
                    x.selection_peak >= 0 ? fmt(x.selection_peak) : "-"});
+    if(b.search)
+      table.add_row({"+ basin search", std::to_string(r), seed, std::to_string(b.planes_select),
+                     std::to_string(x.selection_cells), "-", fmt(x.search_relaxed, "%.8g"), "-",
+                     std::to_string(x.search_improvements) + "/" + std::to_string(x.search_moves) + " moves improved",
+                     reaches(x.search_relaxed) ? "yes" : "no",
+                     fmt(x.selection_seconds + x.search_seconds) + " (search " + fmt(x.search_seconds) + ")",
+                     x.selection_peak >= 0 ? fmt(x.selection_peak) : "-"});
   }
   table.print();
   table.write_csv(prefix + "_blobs.csv");
@@ -417,30 +471,37 @@ void part_blobs(bool quick, const std::string& prefix, Blob_settings b)
               "selection (best relaxed round) %zu / %zu, plane selection (final optimum relaxed only) %zu / %zu\n",
               best, hits(local), local.size(), hits(global), global.size(), hits(selection), selection.size(),
               hits(selection_final), selection_final.size());
-  if(local.empty() || runs.empty()) return;
+  if(b.search)
+    std::printf("plane selection + basin search (select_planes_relaxed_3) %zu / %zu\n", hits(search), search.size());
+  if(runs.empty()) return;
   std::vector<double> sorted = local;
   std::sort(sorted.begin(), sorted.end());
-  std::printf("local descent energies: min %.6g, median %.6g, max %.6g\n", sorted.front(), sorted[sorted.size() / 2],
-              sorted.back());
+  if(!sorted.empty())
+    std::printf("local descent energies: min %.6g, median %.6g, max %.6g\n", sorted.front(), sorted[sorted.size() / 2],
+                sorted.back());
   // The energy histogram (thesis Table 2.3 as counts per energy bin), relaxed energies of every method.
-  const double lo = best, hi = std::max({sorted.back(), *std::max_element(global.begin(), global.end()),
-                                         *std::max_element(selection.begin(), selection.end())});
+  double hi = best;
+  for(const std::vector<double>* v : {&local, &global, &selection, &search})
+    for(double e : *v) hi = std::max(hi, e);
+  const double lo = best;
   const int bins = 12;
   const double width = (hi - lo) / bins > 0 ? (hi - lo) / bins : 1e-9;
-  std::vector<std::array<int, 3>> counts(bins, std::array<int, 3>{{0, 0, 0}});
+  std::vector<std::array<int, 4>> counts(bins, std::array<int, 4>{{0, 0, 0, 0}});
   auto bin_of = [&](double e) { return std::min(bins - 1, std::max(0, int((e - lo) / width))); };
   for(double e : local) ++counts[bin_of(e)][0];
   for(double e : global) ++counts[bin_of(e)][1];
   for(double e : selection) ++counts[bin_of(e)][2];
-  mdcs_bench::Table histogram({"energy_from", "energy_to", "local_descent", "global_one_solve", "plane_selection"});
+  for(double e : search) ++counts[bin_of(e)][3];
+  mdcs_bench::Table histogram({"energy_from", "energy_to", "local_descent", "global_one_solve", "plane_selection",
+                               "plane_selection_basin_search"});
   std::printf("\nenergy histogram (relaxed energies; the first bin starts at the best energy):\n");
   for(int i = 0; i < bins; ++i) {
     const double e0 = lo + i * width, e1 = lo + (i + 1) * width;
     histogram.add_row({fmt(e0, "%.5f"), fmt(e1, "%.5f"), std::to_string(counts[i][0]), std::to_string(counts[i][1]),
-                       std::to_string(counts[i][2])});
-    std::printf("  [%.5f, %.5f) local %-40s global %-8s selection %s\n", e0, e1,
+                       std::to_string(counts[i][2]), b.search ? std::to_string(counts[i][3]) : "-"});
+    std::printf("  [%.5f, %.5f) local %-40s global %-8s selection %-16s search %s\n", e0, e1,
                 std::string(std::size_t(counts[i][0]), '#').c_str(), std::string(std::size_t(counts[i][1]), '#').c_str(),
-                std::string(std::size_t(counts[i][2]), '#').c_str());
+                std::string(std::size_t(counts[i][2]), '#').c_str(), std::string(std::size_t(counts[i][3]), '#').c_str());
   }
   histogram.write_csv(prefix + "_blobs_histogram.csv");
 }
@@ -467,11 +528,25 @@ int main(int argc, char** argv)
     else if(a == "--blob-rounds" && i + 1 < argc) blobs.rounds = std::atoi(argv[++i]);
     else if(a == "--blob-planes" && i + 1 < argc) blobs.planes_select = std::atol(argv[++i]);
     else if(a == "--blob-near" && i + 1 < argc) blobs.near = std::atof(argv[++i]);
+    else if(a == "--blob-search") blobs.search = true;
+    else if(a == "--no-global") blobs.global = false;
+    else if(a == "--blob-best" && i + 1 < argc) blobs.known_best = std::atof(argv[++i]);
+    else if(a == "--blob-shift" && i + 1 < argc) blobs.search_shift = std::atof(argv[++i]);
+    else if(a == "--blob-tilings" && i + 1 < argc) {
+      blobs.search_tilings.clear();
+      for(const char* c = argv[++i]; *c;) {
+        char* end = nullptr;
+        blobs.search_tilings.push_back(int(std::strtol(c, &end, 10)));
+        if(end == c) break;
+        c = *end == ',' ? end + 1 : end;
+      }
+    }
     else if(a == "--jobs" && i + 1 < argc) blobs.jobs = std::max(1, std::atoi(argv[++i]));
     else {
       std::fprintf(stderr, "usage: bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3] "
                            "[--csv-prefix PATH]\n       [--blob-runs N] [--blob-first SEED] [--blob-starts N] "
-                           "[--blob-rounds R] [--blob-planes N] [--blob-near F] [--jobs J]\n");
+                           "[--blob-rounds R] [--blob-planes N] [--blob-near F] [--blob-search] [--no-global]\n"
+                           "       [--blob-best E] [--blob-shift S] [--blob-tilings T1,T2,...] [--jobs J]\n");
       return 2;
     }
   }

@@ -11,6 +11,7 @@
 #include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
+#include <CGAL/Variational_minimization/search_surface_basins_3.h>
 #include <CGAL/Variational_minimization/refine_surface_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
 #include <CGAL/Variational_minimization/surface_facet_weights_3.h>
@@ -35,7 +36,7 @@ namespace mdcs_cli {
 namespace VM3 = CGAL::Variational_minimization;
 
 // Names of the options of `mdcs surface` that take no value.
-inline std::vector<std::string> surface_flags() { return {"quiet", "help", "relax"}; }
+inline std::vector<std::string> surface_flags() { return {"quiet", "help", "relax", "basin-search"}; }
 
 inline const char* surface_usage()
 {
@@ -59,6 +60,9 @@ inline const char* surface_usage()
     "                      their optima's planes and adds planes inside it (default 0: off)\n"
     "  --relax             continue with local relaxation on 20^2, 40^2, 80^2 grids (L-BFGS; on a polygonal\n"
     "                      domain: on Delaunay meshes of the polygon with the edge lengths of those grids)\n"
+    "  --basin-search      with --plane-selection K: relax every round optimum, then search neighbouring basins\n"
+    "                      by constrained cuts tile by tile, kept when their relaxed energy is lower (rectangles;\n"
+    "                      relaxed on 20^2, 40^2 grids; for many-minima problems such as blobs)\n"
     "  --engine pf|pr|bk   max-flow engine: pseudoflow (default), push-relabel, Boykov-Kolmogorov\n"
     "  --seed S            random seed (default 1)\n"
     "  --output DIR        output folder (default mdcs-output); files NAME.ply/.svg/.png/_summary.txt\n"
@@ -78,6 +82,7 @@ struct Surface_settings
   long plane_selection = 1;
   long refine = 0;
   bool relax = false;
+  bool basin_search = false;
   std::string engine = "pf";
   long seed = 1;
   std::string output = "mdcs-output";
@@ -211,6 +216,10 @@ inline Surface_settings parse_surface_settings(const Options& o)
   if(s.refine > 0 && s.plane_selection > 1) throw Usage_error("--refine and --plane-selection exclude each other");
   s.relax = o.has("relax");
   o.text("relax", "");
+  s.basin_search = o.has("basin-search");
+  o.text("basin-search", "");
+  if(s.basin_search && !s.domain.empty()) throw Usage_error("--basin-search needs the problem's rectangle (not --domain)");
+  if(s.basin_search && s.refine > 0) throw Usage_error("--basin-search and --refine exclude each other");
   s.engine = o.text("engine", s.engine);
   if(s.engine != "pf" && s.engine != "pr" && s.engine != "bk") throw Usage_error("--engine must be pf, pr or bk");
   s.seed = o.integer("seed", s.seed, 0);
@@ -291,6 +300,22 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
       run.vertices = A.number_of_vertices();
       return;
     }
+    if(s.basin_search) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const VM3::Relaxed_plane_selection_result_3 r = VM3::select_planes_relaxed_3(
+        run.problem, G, std::size_t(s.planes), int(s.plane_selection), po, VM3::Surface_basin_search_options_3(),
+        engine, std::ref(progress));
+      run.seconds_cut = seconds_since(t0);
+      run.surface = r.selection.surface;
+      run.selection_energies = r.selection.energies;
+      run.cells = r.selection.cells.back();
+      run.relaxed = r.search.relaxed;
+      run.has_relaxed = true;
+      const VM3::Plane_arrangement_3 A(r.selection.planes);
+      run.facets = A.number_of_facets();
+      run.vertices = A.number_of_vertices();
+      return;
+    }
     if(s.plane_selection > 1) {
       const auto t0 = std::chrono::steady_clock::now();
       const VM3::Plane_selection_result_3 r =
@@ -322,7 +347,7 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
   if(s.engine == "pr") solve_once(CGAL::Min_cut::Push_relabel_max_flow());
   else if(s.engine == "bk") solve_once(CGAL::Min_cut::Boykov_kolmogorov_max_flow());
   else solve_once(CGAL::Min_cut::Pseudoflow_max_flow());
-  if(s.relax && run.surface.is_feasible) {
+  if(s.relax && !s.basin_search && run.surface.is_feasible) {
     const auto t0 = std::chrono::steady_clock::now();
     run.relaxed = VM3::relax_surface_3(run.problem, G, run.surface, VM3::Surface_relaxation_options_3(),
                                        std::ref(progress));

@@ -1,0 +1,293 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Basin search (issue 6, blob experiment): plane selection finds discrete optima whose relaxed energies lie in
+// several basins of the continuous problem; the discrete energies at a few 10^5 cells do not tell the basins apart.
+// The basin search compares candidates by their *relaxed* energy and proposes new candidates by constrained
+// minimum cuts: over one tile of the domain the cut is forced above (or below) the current relaxed optimum, the
+// rest of the surface is free; the best discrete surface under that constraint is relaxed and kept if its relaxed
+// energy is lower.
+#ifndef CGAL_VARIATIONAL_MINIMIZATION_SEARCH_SURFACE_BASINS_3_H
+#define CGAL_VARIATIONAL_MINIMIZATION_SEARCH_SURFACE_BASINS_3_H
+
+#include <CGAL/MDCS/progress.h>
+#include <CGAL/Min_cut/internal/contract_terminal_nodes.h>
+#include <CGAL/Min_cut/solve_min_cut.h>
+#include <CGAL/Variational_minimization/Minimal_surface_3.h>
+#include <CGAL/Variational_minimization/Plane_arrangement_3.h>
+#include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/internal/surface_dual_network_3.h>
+#include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/relax_surface_3.h>
+#include <CGAL/Variational_minimization/select_planes_3.h>
+#include <CGAL/Variational_minimization/surface_facet_weights_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Variational_minimization {
+
+/// Options of `search_surface_basins_3()` and `select_planes_relaxed_3()`.
+struct Surface_basin_search_options_3
+{
+  /// The tilings of the domain's bounding box: `t` gives `t x t` equal tiles. Every tile is tried twice per sweep
+  /// (surface forced up, then down).
+  std::vector<int> tilings = {3, 4};
+  /// How far the surface is forced away from the current relaxed optimum over a tile, as a share of zmax - zmin.
+  double shift = 0.1;
+  /// Sweeps over all moves at most; the search stops after a sweep that improved nothing.
+  int sweeps = 3;
+  /// The relaxation that gives every candidate its energy (default: L-BFGS on 20^2 then 40^2).
+  Surface_relaxation_options_3 relaxation = [] {
+    Surface_relaxation_options_3 o;
+    o.grids = {20, 40};
+    return o;
+  }();
+};
+
+/// The outcome of `search_surface_basins_3()`.
+struct Surface_basin_search_result_3
+{
+  /// The best relaxed surface found (never worse than the relaxed start).
+  Relaxed_surface_3 relaxed;
+  /// The discrete surface it was relaxed from.
+  Minimal_surface_3 discrete;
+  /// The relaxed energy of the start.
+  double start_energy = std::numeric_limits<double>::infinity();
+  /// Moves tried (constrained cuts solved; infinite cuts included), moves that lowered the relaxed energy, sweeps.
+  std::size_t moves = 0, improvements = 0, sweeps = 0;
+};
+
+namespace internal {
+
+// The height of a relaxed grid surface at (x, y): linear on the grid's triangles (as relax_surface_3 meshes them).
+inline double relaxed_height_3(const Surface_problem_3& problem, const Relaxed_surface_3& r, double x, double y)
+{
+  const int n = r.n;
+  const double u = (x - problem.domain.xmin()) / (problem.domain.xmax() - problem.domain.xmin()) * n;
+  const double v = (y - problem.domain.ymin()) / (problem.domain.ymax() - problem.domain.ymin()) * n;
+  const int i = (std::max)(0, (std::min)(n - 1, int(std::floor(u))));
+  const int j = (std::max)(0, (std::min)(n - 1, int(std::floor(v))));
+  const double a = (std::max)(0.0, (std::min)(1.0, u - i)), b = (std::max)(0.0, (std::min)(1.0, v - j));
+  auto at = [&](int p, int q) { return r.heights[std::size_t(q) * std::size_t(n + 1) + std::size_t(p)]; };
+  if(a + b <= 1) return at(i, j) + a * (at(i + 1, j) - at(i, j)) + b * (at(i, j + 1) - at(i, j));
+  return at(i + 1, j + 1) + (1 - a) * (at(i, j + 1) - at(i + 1, j + 1)) + (1 - b) * (at(i + 1, j) - at(i + 1, j + 1));
+}
+
+// An interior point of each cell, in world coordinates: the mean of the vertices of its facets.
+inline std::vector<std::array<double, 3>> cell_points_3(const Plane_arrangement_3& arrangement,
+                                                        const Surface_problem_3& problem)
+{
+  typedef Plane_arrangement_3 Arr;
+  std::vector<std::array<double, 3>> out(arrangement.number_of_cells());
+  for(std::size_t c = 0; c < arrangement.number_of_cells(); ++c) {
+    std::array<double, 3> m = {{0, 0, 0}};
+    std::size_t k = 0;
+    for(Arr::Facet_index f : arrangement.cell_facets(Arr::Cell_index(c)))
+      for(std::size_t i = 0; i < arrangement.facet_degree(f); ++i, ++k)
+        for(int j = 0; j < 3; ++j) m[j] += arrangement.point(arrangement.facet_vertex(f, i))[j];
+    for(int j = 0; j < 3; ++j) m[j] /= double(k);
+    out[c] = problem.to_world(m);
+  }
+  return out;
+}
+
+// The input checks of search_surface_basins_3().
+inline void check_basin_search_input_3(const Plane_arrangement_3& arrangement, const std::vector<double>& weights,
+                                       const Surface_problem_3& problem, const Surface_basin_search_options_3& options)
+{
+  problem.validate();
+  if(problem.is_polygonal())
+    throw std::invalid_argument("MDCS: search_surface_basins_3: the basin search needs a rectangular domain (it "
+                                "relaxes on grids over the rectangle)");
+  if(weights.size() != arrangement.number_of_facets())
+    throw std::invalid_argument("MDCS: search_surface_basins_3: one weight per facet of the arrangement is needed");
+  for(int t : options.tilings)
+    if(t < 1 || t > 64) throw std::invalid_argument("MDCS: search_surface_basins_3: tilings must be in [1, 64]");
+  if(!(options.shift > 0 && std::isfinite(options.shift)))
+    throw std::invalid_argument("MDCS: search_surface_basins_3: the shift must be finite and > 0");
+}
+
+// Continues a basin search from `result.relaxed` / `result.discrete` (see search_surface_basins_3()).
+template <class Functional, class Engine, class Progress>
+void continue_basin_search_3(const Plane_arrangement_3& arrangement, const std::vector<double>& weights,
+                             const Surface_problem_3& problem, const Functional& G,
+                             const Surface_basin_search_options_3& options, Engine engine, Progress& progress,
+                             Surface_basin_search_result_3& result)
+{
+  result.start_energy = result.relaxed.energy;
+  std::size_t per_sweep = 0;
+  for(int t : options.tilings) per_sweep += 2 * std::size_t(t) * std::size_t(t);
+  if(per_sweep == 0 || options.sweeps < 1) return;
+
+  const CGAL::Min_cut::Flow_network<double> network = surface_dual_network_3(arrangement, weights, problem);
+  const std::vector<std::array<double, 3>> points = cell_points_3(arrangement, problem);
+  const double delta = options.shift * (problem.zmax - problem.zmin);
+  const double wx = problem.domain.xmax() - problem.domain.xmin(), wy = problem.domain.ymax() - problem.domain.ymin();
+  std::vector<char> label(points.size());
+  for(int sweep = 0; sweep < options.sweeps; ++sweep) {
+    CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "basin search", per_sweep);
+    ++result.sweeps;
+    bool improved = false;
+    std::size_t move = 0;
+    for(int t : options.tilings)
+      for(int tj = 0; tj < t; ++tj)
+        for(int ti = 0; ti < t; ++ti)
+          for(int direction : {+1, -1}) {
+            reporter(move++);
+            ++result.moves;
+            std::size_t tied = 0;
+            for(std::size_t c = 0; c < points.size(); ++c) {
+              label[c] = 0;
+              const auto& p = points[c];
+              const int i = (std::min)(t - 1, int(std::floor((p[0] - problem.domain.xmin()) / wx * t)));
+              const int j = (std::min)(t - 1, int(std::floor((p[1] - problem.domain.ymin()) / wy * t)));
+              if(i != ti || j != tj) continue;
+              const double h = relaxed_height_3(problem, result.relaxed, p[0], p[1]);
+              if(direction > 0 && p[2] < h + delta) label[c] = 1;
+              else if(direction < 0 && p[2] > h - delta) label[c] = 2;
+              tied += label[c] != 0;
+            }
+            if(tied == 0) continue;
+            const CGAL::Min_cut::internal::Contracted_network<double> reduced =
+              CGAL::Min_cut::internal::contract_terminal_nodes(network, label);
+            if(!reduced.is_finite) continue;
+            const auto cut = CGAL::Min_cut::solve_min_cut(reduced.network, engine);
+            if(!cut.is_finite) continue;
+            Minimal_surface_3 s;
+            s.is_feasible = true;
+            s.solver_value = cut.value + reduced.constant;
+            for(const auto& facet : cut.chain) {
+              if(!facet.forward || facet.id >= arrangement.number_of_facets())
+                throw std::logic_error("MDCS: internal error: a finite cut crossed a facet downwards");
+              s.facets.push_back(facet.id);
+            }
+            s.facets.insert(s.facets.end(), reduced.constant_facets.begin(), reduced.constant_facets.end());
+            surface_mesh_from_facets(arrangement, problem, weights, s);
+            Relaxed_surface_3 r = relax_surface_3(problem, G, s, options.relaxation);
+            if(r.energy < result.relaxed.energy * (1 - 1e-9)) {
+              result.relaxed = std::move(r);
+              result.discrete = std::move(s);
+              ++result.improvements;
+              improved = true;
+            }
+          }
+    reporter.finish();
+    if(!improved) break;
+  }
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief Basin search on one arrangement: starting from the relaxed surfaces of `starts` (discrete surfaces, e.g.
+  the round optima of `select_planes_3()`; each is relaxed with `options.relaxation` and the best kept), tries
+  *moves*: for every tile of every tiling in `options.tilings` and both directions, the minimum cut of the
+  arrangement's dual network (weights `weights`) with the cells of the tile lying below (above) the current relaxed
+  optimum shifted up (down) by `options.shift * (zmax - zmin)` tied to the source (sink) — the best discrete
+  surface that leaves the current basin over that tile. That surface is relaxed; if its relaxed energy is lower,
+  it becomes the current optimum (the next moves use it). Sweeps repeat until one improves nothing or
+  `options.sweeps` are done. Deterministic; the relaxed energy never increases. The constrained cuts use
+  `CGAL::Min_cut::internal::contract_terminal_nodes` on the full `Flow_network` (built once).
+  `progress` is called with stage `"basin search"` (fraction of the moves of the sweep).
+  \throws std::invalid_argument for an invalid or polygonal problem, no feasible start, a weight vector of the
+          wrong size, a tiling < 1, or a shift that is not finite and > 0.
+*/
+template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine,
+          class Progress = CGAL::MDCS::No_progress>
+Surface_basin_search_result_3 search_surface_basins_3(const Plane_arrangement_3& arrangement,
+                                                      const std::vector<double>& weights,
+                                                      const Surface_problem_3& problem, const Functional& G,
+                                                      const std::vector<Minimal_surface_3>& starts,
+                                                      const Surface_basin_search_options_3& options =
+                                                        Surface_basin_search_options_3(),
+                                                      Engine engine = Engine(), Progress progress = Progress())
+{
+  internal::check_basin_search_input_3(arrangement, weights, problem, options);
+  Surface_basin_search_result_3 result;
+  for(const Minimal_surface_3& s : starts) {
+    if(!s.is_feasible) continue;
+    Relaxed_surface_3 r = relax_surface_3(problem, G, s, options.relaxation);
+    if(r.energy < result.relaxed.energy) {
+      result.relaxed = std::move(r);
+      result.discrete = s;
+    }
+  }
+  if(!(result.relaxed.energy < std::numeric_limits<double>::infinity()))
+    throw std::invalid_argument("MDCS: search_surface_basins_3: no feasible start surface");
+  internal::continue_basin_search_3(arrangement, weights, problem, G, options, engine, progress, result);
+  return result;
+}
+
+/// The outcome of `select_planes_relaxed_3()`.
+struct Relaxed_plane_selection_result_3
+{
+  /// Plane selection (every round's optimum in `selection.surfaces`).
+  Plane_selection_result_3 selection;
+  /// The relaxed energy of each round's optimum (rounds with the same discrete energy share one relaxation).
+  std::vector<double> round_relaxed_energies;
+  /// The basin search on the arrangement of the best discrete optimum, started from the best relaxed round
+  /// optimum: its `relaxed` member is the answer.
+  Surface_basin_search_result_3 search;
+};
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief Plane selection with relaxed comparison and basin search: `select_planes_3(problem, G, n, rounds,
+  plane_options)`, every distinct round optimum relaxed (`search_options.relaxation`), then
+  `search_surface_basins_3()` on the arrangement of the best discrete optimum, started from the best relaxed round
+  optimum. The answer (`search.relaxed`) has a relaxed energy no higher than the best relaxed round optimum,
+  i.e. than plain plane selection with every round relaxed; with `search_options.sweeps = 0` it is exactly that.
+  Deterministic for given options (seed included). `progress` is called with the stages of the two steps.
+  \throws std::invalid_argument as `select_planes_3()` and `search_surface_basins_3()`.
+*/
+template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine,
+          class Progress = CGAL::MDCS::No_progress>
+Relaxed_plane_selection_result_3 select_planes_relaxed_3(const Surface_problem_3& problem, const Functional& G,
+                                                         std::size_t n, int rounds,
+                                                         const Surface_plane_options_3& plane_options =
+                                                           Surface_plane_options_3(),
+                                                         const Surface_basin_search_options_3& search_options =
+                                                           Surface_basin_search_options_3(),
+                                                         Engine engine = Engine(), Progress progress = Progress())
+{
+  problem.validate();
+  if(problem.is_polygonal())
+    throw std::invalid_argument("MDCS: select_planes_relaxed_3: the relaxation needs a rectangular domain");
+  Relaxed_plane_selection_result_3 out;
+  out.selection = select_planes_3(problem, G, n, rounds, plane_options, 1, engine, progress);
+  const Plane_arrangement_3 arrangement(out.selection.planes);
+  const std::vector<double> w = surface_facet_weights_3(arrangement, problem, G);
+  internal::check_basin_search_input_3(arrangement, w, problem, search_options);
+  // Relax each distinct round optimum once (an equal discrete energy is the same kept surface).
+  std::vector<double> seen, relaxed;
+  Surface_basin_search_result_3& result = out.search;
+  for(const Minimal_surface_3& s : out.selection.surfaces) {
+    const std::size_t k = std::size_t(std::find(seen.begin(), seen.end(), s.energy) - seen.begin());
+    if(k == seen.size()) {
+      if(!s.is_feasible) throw std::invalid_argument("MDCS: select_planes_relaxed_3: a round found no surface");
+      Relaxed_surface_3 r = relax_surface_3(problem, G, s, search_options.relaxation);
+      seen.push_back(s.energy);
+      relaxed.push_back(r.energy);
+      if(r.energy < result.relaxed.energy) {
+        result.relaxed = std::move(r);
+        result.discrete = s;
+      }
+    }
+    out.round_relaxed_energies.push_back(relaxed[k]);
+  }
+  internal::continue_basin_search_3(arrangement, w, problem, G, search_options, engine, progress, result);
+  return out;
+}
+
+} // namespace Variational_minimization
+} // namespace CGAL
+
+#endif // CGAL_VARIATIONAL_MINIMIZATION_SEARCH_SURFACE_BASINS_3_H
