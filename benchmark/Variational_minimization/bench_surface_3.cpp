@@ -11,7 +11,7 @@
 //   bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3] [--csv-prefix PATH]
 //                   [--blob-runs N] [--blob-first SEED] [--blob-starts N] [--blob-rounds R] [--blob-planes N]
 //                   [--blob-near F] [--blob-search] [--no-global] [--blob-best E] [--blob-shift S]
-//                   [--blob-tilings T1,T2,...] [--jobs J]
+//                   [--blob-tilings T1,T2,...] [--blob-no-wide] [--jobs J]
 //
 // --budget (default 60): part 1 stops growing once one row took longer than this (build + weights + cuts).
 // --large: part 1 goes on to about 3M cells (the goal sizes of issue 6) whatever the budget.
@@ -19,7 +19,8 @@
 // with N planes x R rounds (default 160 x 6; --blob-near F: a share F of the redrawn planes near the optimum);
 // --blob-search: plane selection by select_planes_relaxed_3 (every round relaxed, then the basin search of
 // search_surface_basins_3 on the final arrangement; the plain columns are the same run before the search);
-// --blob-shift, --blob-tilings: the search's options (default 0.1 and 3,4); --blob-best E: a best energy known
+// --blob-shift, --blob-tilings: the search's first stage (default 0.1 and 3,4); --blob-no-wide: no second stage
+// (default: tilings 2,3,4 with shift 0.3 once the first stops); --blob-best E: a best energy known
 // from earlier runs, for "reaches the best"; --no-global: skip the one-solve global runs; --jobs J runs them on J threads (each run single-threaded; the peak
 // memory column is then not measured).
 // CSV files: PATH_table22.csv, PATH_scherk.csv, PATH_blobs.csv (default PATH: surface).
@@ -271,6 +272,7 @@ struct Blob_settings
   double known_best = NAN; // --blob-best E: a best energy known from earlier runs (for "reaches best")
   double search_shift = 0.1;              // --blob-shift: Surface_basin_search_options_3::shift
   std::vector<int> search_tilings{3, 4};  // --blob-tilings 3,4: Surface_basin_search_options_3::tilings
+  bool search_wide = true;                // --blob-no-wide: no second (wide) stage (wide_tilings empty)
 };
 
 // One global run of the blob problem: one solve, and plane selection whose every distinct round optimum is relaxed.
@@ -320,6 +322,7 @@ Blob_run blob_run(const VM::Surface_problem_3& P, const Functional& G, const Blo
     so.relaxation = ro;
     so.shift = b.search_shift;
     so.tilings = b.search_tilings;
+    if(!b.search_wide) so.wide_tilings.clear();
     const VM::Relaxed_plane_selection_result_3 R = VM::select_planes_relaxed_3(
       P, G, std::size_t(b.planes_select), b.rounds, o, so, CGAL::Min_cut::Default_max_flow_engine(), mark);
     const double t1 = mdcs_bench::now_seconds();
@@ -532,6 +535,7 @@ int main(int argc, char** argv)
     else if(a == "--no-global") blobs.global = false;
     else if(a == "--blob-best" && i + 1 < argc) blobs.known_best = std::atof(argv[++i]);
     else if(a == "--blob-shift" && i + 1 < argc) blobs.search_shift = std::atof(argv[++i]);
+    else if(a == "--blob-no-wide") blobs.search_wide = false;
     else if(a == "--blob-tilings" && i + 1 < argc) {
       blobs.search_tilings.clear();
       for(const char* c = argv[++i]; *c;) {
@@ -546,7 +550,7 @@ int main(int argc, char** argv)
       std::fprintf(stderr, "usage: bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3] "
                            "[--csv-prefix PATH]\n       [--blob-runs N] [--blob-first SEED] [--blob-starts N] "
                            "[--blob-rounds R] [--blob-planes N] [--blob-near F] [--blob-search] [--no-global]\n"
-                           "       [--blob-best E] [--blob-shift S] [--blob-tilings T1,T2,...] [--jobs J]\n");
+                           "       [--blob-best E] [--blob-shift S] [--blob-tilings T1,T2,...] [--blob-no-wide] [--jobs J]\n");
       return 2;
     }
   }

@@ -89,6 +89,12 @@ TEST_CASE("select_planes_relaxed_3: never worse than plane selection, determinis
     CHECK(R2.search.relaxed.heights == R.search.relaxed.heights);
     CHECK(R2.search.moves == R.search.moves);
     CHECK(R2.search.improvements == R.search.improvements);
+    // The wide second stage only adds moves after the first stage: never worse than the first stage alone.
+    VM::Surface_basin_search_options_3 narrow = so;
+    narrow.wide_tilings.clear();
+    const VM::Relaxed_plane_selection_result_3 RN = VM::select_planes_relaxed_3(P, G, 60, 2, o, narrow);
+    CHECK(R.search.relaxed.energy <= RN.search.relaxed.energy);
+    CHECK(R.search.moves > RN.search.moves);
     // Without sweeps: exactly plain plane selection (the best relaxed round optimum).
     VM::Surface_basin_search_options_3 none = so;
     none.sweeps = 0;
@@ -121,6 +127,11 @@ TEST_CASE("search_surface_basins_3: bad input", "[variational][surface][basin_se
   bad.shift = 0;
   CHECK_THROWS_AS(VM::search_surface_basins_3(A, w, P, G, {s}, bad), std::invalid_argument);
   bad.shift = std::nan("");
+  CHECK_THROWS_AS(VM::search_surface_basins_3(A, w, P, G, {s}, bad), std::invalid_argument);
+  bad = so;
+  bad.wide_shift = -1;
+  CHECK_THROWS_AS(VM::search_surface_basins_3(A, w, P, G, {s}, bad), std::invalid_argument);
+  bad.wide_tilings = {0};
   CHECK_THROWS_AS(VM::search_surface_basins_3(A, w, P, G, {s}, bad), std::invalid_argument);
   VM::Surface_problem_3 Q = P;
   Q.set_domain_polygon({{0, 0}, {1, 0}, {1, 0.5}, {0.5, 0.5}, {0.5, 1}, {0, 1}});

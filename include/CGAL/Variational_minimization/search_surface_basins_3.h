@@ -43,6 +43,12 @@ struct Surface_basin_search_options_3
   double shift = 0.1;
   /// Sweeps over all moves at most; the search stops after a sweep that improved nothing.
   int sweeps = 3;
+  /// A second stage with wider moves, run once the first stage (`tilings`, `shift`) stops: coarser tiles and a
+  /// larger shift can leave a basin from which no move of the first stage improves (blob seed 125 of the
+  /// benchmark). It only adds moves, so the result is never worse than the first stage's. Empty: no second stage.
+  std::vector<int> wide_tilings = {2, 3, 4};
+  /// The shift of the second stage, as a share of zmax - zmin.
+  double wide_shift = 0.3;
   /// The relaxation that gives every candidate its energy (default: L-BFGS on 20^2 then 40^2).
   Surface_relaxation_options_3 relaxation = [] {
     Surface_relaxation_options_3 o;
@@ -108,27 +114,29 @@ inline void check_basin_search_input_3(const Plane_arrangement_3& arrangement, c
                                 "relaxes on grids over the rectangle)");
   if(weights.size() != arrangement.number_of_facets())
     throw std::invalid_argument("MDCS: search_surface_basins_3: one weight per facet of the arrangement is needed");
-  for(int t : options.tilings)
-    if(t < 1 || t > 64) throw std::invalid_argument("MDCS: search_surface_basins_3: tilings must be in [1, 64]");
+  for(const std::vector<int>* tilings : {&options.tilings, &options.wide_tilings})
+    for(int t : *tilings)
+      if(t < 1 || t > 64) throw std::invalid_argument("MDCS: search_surface_basins_3: tilings must be in [1, 64]");
   if(!(options.shift > 0 && std::isfinite(options.shift)))
     throw std::invalid_argument("MDCS: search_surface_basins_3: the shift must be finite and > 0");
+  if(!options.wide_tilings.empty() && !(options.wide_shift > 0 && std::isfinite(options.wide_shift)))
+    throw std::invalid_argument("MDCS: search_surface_basins_3: the wide shift must be finite and > 0");
 }
 
-// Continues a basin search from `result.relaxed` / `result.discrete` (see search_surface_basins_3()).
+// One stage of the basin search: sweeps over the moves of `tilings` with the shift `shift` (see
+// search_surface_basins_3()), until a sweep improves nothing or `options.sweeps` are done.
 template <class Functional, class Engine, class Progress>
-void continue_basin_search_3(const Plane_arrangement_3& arrangement, const std::vector<double>& weights,
-                             const Surface_problem_3& problem, const Functional& G,
-                             const Surface_basin_search_options_3& options, Engine engine, Progress& progress,
-                             Surface_basin_search_result_3& result)
+void basin_search_stage_3(const Plane_arrangement_3& arrangement, const std::vector<double>& weights,
+                          const Surface_problem_3& problem, const Functional& G,
+                          const Surface_basin_search_options_3& options, const std::vector<int>& tilings,
+                          double shift, const CGAL::Min_cut::Flow_network<double>& network,
+                          const std::vector<std::array<double, 3>>& points, Engine engine, Progress& progress,
+                          Surface_basin_search_result_3& result)
 {
-  result.start_energy = result.relaxed.energy;
   std::size_t per_sweep = 0;
-  for(int t : options.tilings) per_sweep += 2 * std::size_t(t) * std::size_t(t);
-  if(per_sweep == 0 || options.sweeps < 1) return;
-
-  const CGAL::Min_cut::Flow_network<double> network = surface_dual_network_3(arrangement, weights, problem);
-  const std::vector<std::array<double, 3>> points = cell_points_3(arrangement, problem);
-  const double delta = options.shift * (problem.zmax - problem.zmin);
+  for(int t : tilings) per_sweep += 2 * std::size_t(t) * std::size_t(t);
+  if(per_sweep == 0) return;
+  const double delta = shift * (problem.zmax - problem.zmin);
   const double wx = problem.domain.xmax() - problem.domain.xmin(), wy = problem.domain.ymax() - problem.domain.ymin();
   std::vector<char> label(points.size());
   for(int sweep = 0; sweep < options.sweeps; ++sweep) {
@@ -136,7 +144,7 @@ void continue_basin_search_3(const Plane_arrangement_3& arrangement, const std::
     ++result.sweeps;
     bool improved = false;
     std::size_t move = 0;
-    for(int t : options.tilings)
+    for(int t : tilings)
       for(int tj = 0; tj < t; ++tj)
         for(int ti = 0; ti < t; ++ti)
           for(int direction : {+1, -1}) {
@@ -183,6 +191,23 @@ void continue_basin_search_3(const Plane_arrangement_3& arrangement, const std::
   }
 }
 
+// Continues a basin search from `result.relaxed` / `result.discrete` (see search_surface_basins_3()).
+template <class Functional, class Engine, class Progress>
+void continue_basin_search_3(const Plane_arrangement_3& arrangement, const std::vector<double>& weights,
+                             const Surface_problem_3& problem, const Functional& G,
+                             const Surface_basin_search_options_3& options, Engine engine, Progress& progress,
+                             Surface_basin_search_result_3& result)
+{
+  result.start_energy = result.relaxed.energy;
+  if(options.sweeps < 1 || (options.tilings.empty() && options.wide_tilings.empty())) return;
+  const CGAL::Min_cut::Flow_network<double> network = surface_dual_network_3(arrangement, weights, problem);
+  const std::vector<std::array<double, 3>> points = cell_points_3(arrangement, problem);
+  basin_search_stage_3(arrangement, weights, problem, G, options, options.tilings, options.shift, network, points,
+                       engine, progress, result);
+  basin_search_stage_3(arrangement, weights, problem, G, options, options.wide_tilings, options.wide_shift, network,
+                       points, engine, progress, result);
+}
+
 } // namespace internal
 
 /*!
@@ -194,7 +219,8 @@ void continue_basin_search_3(const Plane_arrangement_3& arrangement, const std::
   optimum shifted up (down) by `options.shift * (zmax - zmin)` tied to the source (sink) — the best discrete
   surface that leaves the current basin over that tile. That surface is relaxed; if its relaxed energy is lower,
   it becomes the current optimum (the next moves use it). Sweeps repeat until one improves nothing or
-  `options.sweeps` are done. Deterministic; the relaxed energy never increases. The constrained cuts use
+  `options.sweeps` are done. Then a second stage does the same with `options.wide_tilings` and
+  `options.wide_shift` (wider moves; empty `wide_tilings`: none). Deterministic; the relaxed energy never increases. The constrained cuts use
   `CGAL::Min_cut::internal::contract_terminal_nodes` on the full `Flow_network` (built once).
   `progress` is called with stage `"basin search"` (fraction of the moves of the sweep).
   \throws std::invalid_argument for an invalid or polygonal problem, no feasible start, a weight vector of the
