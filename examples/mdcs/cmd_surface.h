@@ -26,6 +26,8 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <random>
+#include <array>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -63,6 +65,10 @@ inline const char* surface_usage()
     "  --basin-search      with --plane-selection K: relax every round optimum, then search neighbouring basins\n"
     "                      by constrained cuts tile by tile, kept when their relaxed energy is lower (rectangles;\n"
     "                      relaxed on 20^2, 40^2 grids; for many-minima problems such as blobs)\n"
+    "  --descents N        also N local descents from random smooth starts (L-BFGS on 20^2, 40^2 grids from a\n"
+    "                      bilinear function on a random 5 x 5 grid of heights), and a histogram of their\n"
+    "                      relaxed energies against the global result relaxed the same way: NAME_histogram.svg\n"
+    "                      (the thesis's Table 2.3 as a plot; rectangles only; default 0)\n"
     "  --engine pf|pr|bk   max-flow engine: pseudoflow (default), push-relabel, Boykov-Kolmogorov\n"
     "  --seed S            random seed (default 1)\n"
     "  --output DIR        output folder (default mdcs-output); files NAME.ply/.svg/.png/_summary.txt\n"
@@ -83,6 +89,7 @@ struct Surface_settings
   long refine = 0;
   bool relax = false;
   bool basin_search = false;
+  long descents = 0;
   std::string engine = "pf";
   long seed = 1;
   std::string output = "mdcs-output";
@@ -103,6 +110,10 @@ struct Surface_run
   std::size_t cells = 0, facets = 0, vertices = 0, pencils = 0;
   double seconds_build = 0, seconds_weights = 0, seconds_cut = 0, seconds_relax = 0, seconds_total = 0;
   std::string ply, svg, summary;
+  // --descents: relaxed energies of the random-start local descents and of the global result (same relaxation)
+  std::vector<double> descent_energies;
+  double global_descent_energy = NAN, seconds_descents = 0;
+  std::string histogram_svg;
 };
 
 
@@ -220,6 +231,9 @@ inline Surface_settings parse_surface_settings(const Options& o)
   o.text("basin-search", "");
   if(s.basin_search && !s.domain.empty()) throw Usage_error("--basin-search needs the problem's rectangle (not --domain)");
   if(s.basin_search && s.refine > 0) throw Usage_error("--basin-search and --refine exclude each other");
+  s.descents = o.integer("descents", s.descents, 0);
+  if(s.descents > 10000) throw Usage_error("--descents must be <= 10000");
+  if(s.descents > 0 && !s.domain.empty()) throw Usage_error("--descents needs the problem's rectangle (not --domain)");
   s.engine = o.text("engine", s.engine);
   if(s.engine != "pf" && s.engine != "pr" && s.engine != "bk") throw Usage_error("--engine must be pf, pr or bk");
   s.seed = o.integer("seed", s.seed, 0);
@@ -270,6 +284,87 @@ inline VM3::Surface_problem_3 surface_problem_for(const std::string& name, int s
     P = VM3::scherk_surface_problem_3(segments);
   }
   return P;
+}
+
+// --descents: local descents (projected L-BFGS on 20^2 then 40^2) from random smooth starts -- bilinear on a
+// random 5 x 5 grid of heights in [zmin, zmax] -- and the global result relaxed the same way, so that the
+// energies are comparable (the thesis's Table 2.3: how often local optimisation finds the global basin).
+template <class Functional>
+void run_surface_descents(const Surface_settings& s, const Functional& G, Surface_run& run, Progress_bar& progress)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  VM3::Surface_relaxation_options_3 ro;
+  ro.grids = {20, 40};
+  run.global_descent_energy = s.basin_search ? run.relaxed.energy // the basin search relaxes on 20^2, 40^2
+                                             : VM3::relax_surface_3(run.problem, G, run.surface, ro).energy;
+  const VM3::Surface_problem_3& P = run.problem;
+  const double x0 = P.domain.xmin(), y0 = P.domain.ymin();
+  const double wx = P.domain.xmax() - x0, wy = P.domain.ymax() - y0;
+  std::mt19937_64 rng(std::uint64_t(s.seed) * 7919u + 17u);
+  std::uniform_real_distribution<double> height(P.zmin, P.zmax);
+  run.descent_energies.clear();
+  for(long k = 0; k < s.descents; ++k) {
+    std::array<double, 25> c;
+    for(double& v : c) v = height(rng);
+    auto start = [&](double x, double y) {
+      const double u = (std::min)(4.0, (std::max)(0.0, (x - x0) / wx * 4)),
+                   v = (std::min)(4.0, (std::max)(0.0, (y - y0) / wy * 4));
+      const int i = (std::min)(3, int(u)), j = (std::min)(3, int(v));
+      const double a = u - i, e = v - j;
+      return (1 - a) * (1 - e) * c[5 * i + j] + a * (1 - e) * c[5 * (i + 1) + j] + (1 - a) * e * c[5 * i + j + 1] +
+             a * e * c[5 * (i + 1) + j + 1];
+    };
+    run.descent_energies.push_back(VM3::relax_surface_3(P, G, start, ro).energy);
+    if(!progress("local descents", double(k + 1) / double(s.descents))) break;
+  }
+  run.seconds_descents = seconds_since(t0);
+}
+
+// A descent ends lower than the global result when it is lower by more than the relaxation's own spread (1e-6
+// relative): equal energies to that precision are the same basin.
+inline bool descent_is_lower(double descent, double global) { return descent < global - 1e-6 * std::abs(global); }
+
+// The histogram of the local descents' relaxed energies, the global result's energy marked (NAME_histogram.svg).
+inline void write_descent_histogram_svg(const std::string& path, const std::vector<double>& energies, double global,
+                                        const std::string& title)
+{
+  const int bins = 12;
+  double lo = global, hi = global;
+  for(double e : energies) { lo = (std::min)(lo, e); hi = (std::max)(hi, e); }
+  if(!(hi > lo)) hi = lo + 1e-9 * (1 + std::abs(lo));
+  const double width = (hi - lo) / bins;
+  std::vector<int> count(bins, 0);
+  for(double e : energies) ++count[std::size_t((std::min)(bins - 1, int((e - lo) / width)))];
+  const int top = (std::max)(1, *std::max_element(count.begin(), count.end()));
+  const double W = 720, H = 400, L = 60, R = 45, T = 50, B = 70, pw = W - L - R, ph = H - T - B;
+  std::ofstream f(path);
+  f << std::setprecision(6) << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
+    << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+    << "<text x=\"" << W / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << title << "</text>\n";
+  for(int b = 0; b < bins; ++b) {
+    const double h = ph * count[std::size_t(b)] / top, x = L + pw * b / bins;
+    f << "<rect x=\"" << x + 1 << "\" y=\"" << T + ph - h << "\" width=\"" << pw / bins - 2 << "\" height=\"" << h
+      << "\" fill=\"#7a9cc6\"/>\n";
+    if(count[std::size_t(b)] > 0)
+      f << "<text x=\"" << x + pw / bins / 2 << "\" y=\"" << T + ph - h - 4 << "\" text-anchor=\"middle\">"
+        << count[std::size_t(b)] << "</text>\n";
+  }
+  f << "<line x1=\"" << L << "\" y1=\"" << T + ph << "\" x2=\"" << L + pw << "\" y2=\"" << T + ph
+    << "\" stroke=\"black\"/>\n<line x1=\"" << L << "\" y1=\"" << T << "\" x2=\"" << L << "\" y2=\"" << T + ph
+    << "\" stroke=\"black\"/>\n";
+  for(int k = 0; k <= 4; ++k) {
+    const double e = lo + (hi - lo) * k / 4, x = L + pw * k / 4;
+    f << "<text x=\"" << x << "\" y=\"" << T + ph + 16 << "\" text-anchor=\"middle\">" << e << "</text>\n";
+  }
+  const double gx = L + pw * (global - lo) / (hi - lo);
+  f << "<line x1=\"" << gx << "\" y1=\"" << T - 6 << "\" x2=\"" << gx << "\" y2=\"" << T + ph
+    << "\" stroke=\"#c0392b\" stroke-width=\"3\"/>\n<text x=\"" << gx + 6 << "\" y=\"" << T - 10
+    << "\" fill=\"#c0392b\">global (min-cut) " << global << "</text>\n"
+    << "<text x=\"" << L + pw / 2 << "\" y=\"" << H - 28
+    << "\" text-anchor=\"middle\">relaxed energy (L-BFGS on 20^2, 40^2 grids); bars: " << energies.size()
+    << " local descents from random starts</text>\n"
+    << "<text x=\"14\" y=\"" << T + ph / 2 << "\" transform=\"rotate(-90 14 " << T + ph / 2
+    << ")\" text-anchor=\"middle\">runs</text>\n</svg>\n";
 }
 
 template <class Functional>
@@ -354,6 +449,7 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
     run.has_relaxed = true;
     run.seconds_relax = seconds_since(t0);
   }
+  if(s.descents > 0 && run.surface.is_feasible) run_surface_descents(s, G, run, progress);
 }
 
 inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress)
@@ -453,7 +549,22 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
   write_surface_svg(run.svg, run.has_relaxed ? VM3::grid_surface_mesh_3(run.problem, run.relaxed) : run.surface,
                     run.problem, "mdcs surface: " + s.problem, {cap1.str(), cap2.str()});
   svg_to_png(run.svg);
-  sum << "files             " << run.ply << ", " << run.svg << "\n";
+  if(!run.descent_energies.empty()) {
+    std::vector<double> sorted = run.descent_energies;
+    std::sort(sorted.begin(), sorted.end());
+    const std::size_t lower = std::size_t(std::count_if(sorted.begin(), sorted.end(),
+                                                        [&](double e) { return descent_is_lower(e, run.global_descent_energy); }));
+    sum << std::setprecision(8) << "local descents    " << sorted.size() << " from random starts (20^2, 40^2): best "
+        << sorted.front() << ", median " << sorted[sorted.size() / 2] << "; global result relaxed the same way "
+        << run.global_descent_energy << " (" << lower << " of the descents lower by more than 1e-6 relative); " << std::setprecision(3)
+        << run.seconds_descents << " s\n";
+    run.histogram_svg = (folder / (s.name + "_histogram.svg")).string();
+    write_descent_histogram_svg(run.histogram_svg, run.descent_energies, run.global_descent_energy,
+                                "mdcs surface " + s.problem + ": local descents vs the global result");
+    svg_to_png(run.histogram_svg);
+  }
+  sum << "files             " << run.ply << ", " << run.svg << (run.histogram_svg.empty() ? "" : ", " + run.histogram_svg)
+      << "\n";
   run.summary = sum.str();
   std::ofstream((folder / (s.name + "_summary.txt")).string()) << run.summary;
   return run;
@@ -490,6 +601,7 @@ inline bool demo_surface(const std::filesystem::path& folder, bool quick, bool q
                                        : std::vector<Demo>{{"saddle", 120, 1, true, ""}, {"membrane", 120, 1, false, ""},
                                                            {"scherk", 140, 1, true, ""}, {"blobs", 90, 3, true, ""},
                                                            {"saddle", 120, 1, true, "L"}};
+  std::ostringstream hist;
   for(const Demo& d : runs) {
     Surface_settings s;
     s.problem = d.problem;
@@ -497,6 +609,7 @@ inline bool demo_surface(const std::filesystem::path& folder, bool quick, bool q
     s.plane_selection = d.selection;
     s.relax = d.relax;
     s.domain = d.domain;
+    if(std::string(d.problem) == "blobs") s.descents = 8; // the histogram of Table 2.3, at a small size
     s.output = folder.string();
     s.name = std::string("surface_") + d.problem + (s.domain.empty() ? "" : "_" + s.domain);
     s.quiet = quiet;
@@ -521,7 +634,16 @@ inline bool demo_surface(const std::filesystem::path& folder, bool quick, bool q
     else row << "-";
     row << " | " << std::setprecision(3) << r.seconds_total << " | [" << s.name << ".svg](" << s.name << ".svg) |\n";
     md << row.str();
+    if(!r.histogram_svg.empty()) {
+      std::size_t lower = 0;
+      for(double e : r.descent_energies) lower += descent_is_lower(e, r.global_descent_energy) ? 1 : 0;
+      hist << "\nBlob problem (thesis Table 2.3 as a plot): " << r.descent_energies.size()
+           << " local descents from random smooth starts against the global result, all relaxed on 20^2, 40^2 grids: "
+           << lower << " of them end lower than the global result. [" << s.name << "_histogram.svg](" << s.name
+           << "_histogram.svg)\n";
+    }
   }
+  md << hist.str();
   (void)progress;
   return ok;
 }
