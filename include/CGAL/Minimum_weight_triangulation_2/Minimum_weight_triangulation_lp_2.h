@@ -303,9 +303,16 @@ public:
     std::sort(e.begin(), e.end());
     e.erase(std::unique(e.begin(), e.end()), e.end());
     if(options_.triangle_weight) {
+      // The user's weights are taken as exact doubles; their interval sum bounds the rounding of the double sum
+      // whatever the number of triangles (a fixed relative slack would not).
       double s = 0;
-      for(const auto& t : tri) s += user_weight(t[0], t[1], t[2]);
-      if(upper) *upper = s * (1 + 1e-12);
+      Blocked_interval_sum I;
+      for(const auto& t : tri) {
+        const double w = user_weight(t[0], t[1], t[2]);
+        s += w;
+        I.add(Interval(w));
+      }
+      if(upper) *upper = I.value().sup();
       return s;
     }
     double s = 0;
