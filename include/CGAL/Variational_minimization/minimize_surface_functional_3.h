@@ -8,6 +8,7 @@
 
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
+#include <CGAL/Min_cut/internal/contract_terminal_nodes.h>
 #include <CGAL/Min_cut/internal/pseudoflow_solver.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
@@ -202,6 +203,31 @@ Surface_cut_3 surface_min_cut_3(const Plane_arrangement_3& arrangement, const st
     return surface_min_cut_3<CGAL::Min_cut::Pseudoflow_max_flow>(arrangement, weights, problem,
                                                                  CGAL::Min_cut::Pseudoflow_max_flow(), progress);
   return surface_pseudoflow_cut_3(arrangement, [&](std::uint32_t f) { return weights[f]; }, problem, progress, false);
+}
+
+// The surface of the minimum cut of a network contracted by CGAL::Min_cut::internal::contract_terminal_nodes
+// (refinement, basin search): the cut's facets plus the facets the contraction fixed. Infeasible when the
+// contracted network or its cut is infinite.
+template <class Engine>
+Minimal_surface_3 surface_from_contracted_cut_3(const Plane_arrangement_3& arrangement, const Surface_problem_3& problem,
+                                                const std::vector<double>& weights,
+                                                const CGAL::Min_cut::internal::Contracted_network<double>& reduced,
+                                                Engine engine)
+{
+  Minimal_surface_3 s;
+  if(!reduced.is_finite) return s;
+  const auto cut = CGAL::Min_cut::solve_min_cut(reduced.network, engine);
+  if(!cut.is_finite) return s;
+  s.is_feasible = true;
+  s.solver_value = cut.value + reduced.constant;
+  for(const auto& facet : cut.chain) {
+    if(!facet.forward || facet.id >= arrangement.number_of_facets())
+      throw std::logic_error("MDCS: internal error: a finite cut crossed a facet downwards");
+    s.facets.push_back(facet.id);
+  }
+  s.facets.insert(s.facets.end(), reduced.constant_facets.begin(), reduced.constant_facets.end());
+  surface_mesh_from_facets(arrangement, problem, weights, s);
+  return s;
 }
 
 } // namespace internal

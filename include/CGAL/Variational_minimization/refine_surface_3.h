@@ -186,21 +186,7 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
   network = CGAL::Min_cut::Flow_network<double>(); // release the full network before the solve
   result.network_nodes = reduced.network.number_of_nodes();
   result.network_facets = reduced.network.number_of_facets();
-  Minimal_surface_3& s = result.surface;
-  if(reduced.is_finite) {
-    const auto cut = CGAL::Min_cut::solve_min_cut(reduced.network, engine);
-    if(cut.is_finite) {
-      s.is_feasible = true;
-      s.solver_value = cut.value + reduced.constant;
-      for(const auto& facet : cut.chain) {
-        if(!facet.forward || facet.id >= arrangement.number_of_facets())
-          throw std::logic_error("MDCS: internal error: a finite cut crossed a facet downwards");
-        s.facets.push_back(facet.id);
-      }
-      s.facets.insert(s.facets.end(), reduced.constant_facets.begin(), reduced.constant_facets.end());
-      internal::surface_mesh_from_facets(arrangement, problem, w, s);
-    }
-  }
+  result.surface = internal::surface_from_contracted_cut_3(arrangement, problem, w, reduced, engine);
   reporter.finish();
   return result;
 }

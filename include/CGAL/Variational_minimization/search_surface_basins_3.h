@@ -163,21 +163,9 @@ void basin_search_stage_3(const Plane_arrangement_3& arrangement, const std::vec
               tied += label[c] != 0;
             }
             if(tied == 0) continue;
-            const CGAL::Min_cut::internal::Contracted_network<double> reduced =
-              CGAL::Min_cut::internal::contract_terminal_nodes(network, label);
-            if(!reduced.is_finite) continue;
-            const auto cut = CGAL::Min_cut::solve_min_cut(reduced.network, engine);
-            if(!cut.is_finite) continue;
-            Minimal_surface_3 s;
-            s.is_feasible = true;
-            s.solver_value = cut.value + reduced.constant;
-            for(const auto& facet : cut.chain) {
-              if(!facet.forward || facet.id >= arrangement.number_of_facets())
-                throw std::logic_error("MDCS: internal error: a finite cut crossed a facet downwards");
-              s.facets.push_back(facet.id);
-            }
-            s.facets.insert(s.facets.end(), reduced.constant_facets.begin(), reduced.constant_facets.end());
-            surface_mesh_from_facets(arrangement, problem, weights, s);
+            Minimal_surface_3 s = surface_from_contracted_cut_3(
+              arrangement, problem, weights, CGAL::Min_cut::internal::contract_terminal_nodes(network, label), engine);
+            if(!s.is_feasible) continue;
             Relaxed_surface_3 r = relax_surface_3(problem, G, s, options.relaxation);
             if(r.energy < result.relaxed.energy * (1 - 1e-9)) {
               result.relaxed = std::move(r);

@@ -10,6 +10,7 @@
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
+#include <CGAL/Variational_minimization/internal/functional_evaluation_3.h>
 #include <CGAL/Variational_minimization/internal/surface_domain_cells_3.h>
 
 #include <algorithm>
@@ -24,19 +25,6 @@
 namespace CGAL {
 namespace Variational_minimization {
 namespace internal {
-
-template <class Functional>
-double checked_value(const Functional& G, double f, double fx, double fy, double x, double y)
-{
-  const double v = G(f, fx, fy, x, y);
-  if(!(v >= 0) || !std::isfinite(v)) {
-    std::ostringstream s;
-    s << "MDCS: the functional G must be finite and >= 0, but G(f = " << f << ", fx = " << fx << ", fy = " << fy
-      << ", x = " << x << ", y = " << y << ") = " << v;
-    throw std::invalid_argument(s.str());
-  }
-  return v;
-}
 
 // The degree-5 seven-point rule on the triangle (a, b, c), recursively subdivided `level` times.
 template <class Functional>

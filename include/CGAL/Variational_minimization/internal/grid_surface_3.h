@@ -9,12 +9,12 @@
 
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/internal/functional_evaluation_3.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -70,25 +70,11 @@ double grid_energy_3(const Grid_frame_3& g, const Functional& G, const std::vect
           cy = g.y0 + g.hy * (j + 2.0 / 3);
         }
         const double fc = (f[v[0]] + f[v[1]] + f[v[2]]) / 3;
-        const double value = G(fc, fx, fy, cx, cy);
-        if(!(value >= 0) || !std::isfinite(value)) {
-          std::ostringstream s;
-          s << "MDCS: the functional G must be finite and >= 0, but G(f = " << fc << ", fx = " << fx << ", fy = " << fy
-            << ", x = " << cx << ", y = " << cy << ") = " << value;
-          throw std::invalid_argument(s.str());
-        }
-        energy += area * value;
+        energy += area * checked_value(G, fc, fx, fy, cx, cy);
         if(grad) {
-          auto diff = [&](double a0, double a1, double a2, int which) {
-            const double base = which == 0 ? a0 : (which == 1 ? a1 : a2);
-            const double h = 1e-6 * (1 + std::abs(base));
-            double p[3] = {a0, a1, a2}, m[3] = {a0, a1, a2};
-            p[which] += h;
-            m[which] -= h;
-            return (G(p[0], p[1], p[2], cx, cy) - G(m[0], m[1], m[2], cx, cy)) / (2 * h);
-          };
-          const double gf = diff(fc, fx, fy, 0), gx = diff(fc, fx, fy, 1), gy = diff(fc, fx, fy, 2);
-          for(int k = 0; k < 3; ++k) (*grad)[v[k]] += area * (gf / 3 + gx * dx[k] + gy * dy[k]);
+          double d[3];
+          functional_partials(G, fc, fx, fy, cx, cy, d);
+          for(int k = 0; k < 3; ++k) (*grad)[v[k]] += area * (d[0] / 3 + d[1] * dx[k] + d[2] * dy[k]);
         }
       }
   return energy;

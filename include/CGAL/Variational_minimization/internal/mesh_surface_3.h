@@ -18,12 +18,12 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
+#include <CGAL/Variational_minimization/internal/functional_evaluation_3.h>
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -141,25 +141,11 @@ double mesh_energy_3(const Triangle_mesh_frame_3& m, const Functional& G, const 
       fy += f[v[k]] * m.dphi_y[t][k];
     }
     const double fc = (f[v[0]] + f[v[1]] + f[v[2]]) / 3, cx = m.centroid[t][0], cy = m.centroid[t][1];
-    const double value = G(fc, fx, fy, cx, cy);
-    if(!(value >= 0) || !std::isfinite(value)) {
-      std::ostringstream s;
-      s << "MDCS: the functional G must be finite and >= 0, but G(f = " << fc << ", fx = " << fx << ", fy = " << fy
-        << ", x = " << cx << ", y = " << cy << ") = " << value;
-      throw std::invalid_argument(s.str());
-    }
-    energy += m.area[t] * value;
+    energy += m.area[t] * checked_value(G, fc, fx, fy, cx, cy);
     if(grad) {
       // Central differences of G in (f, fx, fy), as on the rectangle's grids.
       double d[3];
-      const double base[3] = {fc, fx, fy};
-      for(int which = 0; which < 3; ++which) {
-        const double h = 1e-6 * (1 + std::abs(base[which]));
-        double p[3] = {fc, fx, fy}, q[3] = {fc, fx, fy};
-        p[which] += h;
-        q[which] -= h;
-        d[which] = (G(p[0], p[1], p[2], cx, cy) - G(q[0], q[1], q[2], cx, cy)) / (2 * h);
-      }
+      functional_partials(G, fc, fx, fy, cx, cy, d);
       for(int k = 0; k < 3; ++k)
         (*grad)[v[k]] += m.area[t] * (d[0] / 3 + d[1] * m.dphi_x[t][k] + d[2] * m.dphi_y[t][k]);
     }
