@@ -13,6 +13,8 @@
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
+#include <MDCS_test/polygon_geometry.h>
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -28,22 +30,7 @@ double rel(double a, double b) { return a == b ? 0 : std::abs(a - b) / std::max(
 
 const Polygon L_shape = {{{0, 0}}, {{1, 0}}, {{1, 0.5}}, {{0.5, 0.5}}, {{0.5, 1}}, {{0, 1}}};
 
-// Closed point-in-polygon (with a tolerance) for the checks.
-bool in_polygon(const Polygon& p, double x, double y, double eps = 1e-9)
-{
-  for(std::size_t i = 0; i < p.size(); ++i) {
-    const auto& a = p[i];
-    const auto& b = p[(i + 1) % p.size()];
-    const double dx = b[0] - a[0], dy = b[1] - a[1];
-    const double t = std::max(0.0, std::min(1.0, ((x - a[0]) * dx + (y - a[1]) * dy) / (dx * dx + dy * dy)));
-    if(std::hypot(a[0] + t * dx - x, a[1] + t * dy - y) <= eps) return true;
-  }
-  bool in = false;
-  for(std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
-    if((p[i][1] > y) != (p[j][1] > y) && x < (p[j][0] - p[i][0]) * (y - p[i][1]) / (p[j][1] - p[i][1]) + p[i][0])
-      in = !in;
-  return in;
-}
+using MDCS_test::in_polygon;
 
 template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine>
 VM::Minimal_surface_3 solve(const VM::Surface_problem_3& P, const std::vector<VM::Lattice_plane_3>& planes,

@@ -16,6 +16,8 @@
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
+#include <MDCS_test/polygon_geometry.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -35,34 +37,8 @@ const Polygon hexagon = {{{0.25, 0}}, {{0.75, 0}}, {{1, 0.5}}, {{0.75, 1}}, {{0.
 const Polygon u_shape = {{{0, 0}}, {{1, 0}}, {{1, 1}}, {{0.75, 1}}, {{0.75, 0.25}}, {{0.25, 0.25}}, {{0.25, 1}},
                          {{0, 1}}};
 
-// Distance from (x, y) to the boundary of p, and the index of the nearest edge.
-double boundary_distance(const Polygon& p, double x, double y, std::size_t* edge = nullptr)
-{
-  double best = 1e300;
-  for(std::size_t i = 0; i < p.size(); ++i) {
-    const auto& a = p[i];
-    const auto& b = p[(i + 1) % p.size()];
-    const double dx = b[0] - a[0], dy = b[1] - a[1];
-    const double t = std::max(0.0, std::min(1.0, ((x - a[0]) * dx + (y - a[1]) * dy) / (dx * dx + dy * dy)));
-    const double d = std::hypot(a[0] + t * dx - x, a[1] + t * dy - y);
-    if(d < best) {
-      best = d;
-      if(edge) *edge = i;
-    }
-  }
-  return best;
-}
-
-// Closed point-in-polygon with a tolerance.
-bool in_polygon(const Polygon& p, double x, double y, double eps = 1e-9)
-{
-  if(boundary_distance(p, x, y) <= eps) return true;
-  bool in = false;
-  for(std::size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
-    if((p[i][1] > y) != (p[j][1] > y) && x < (p[j][0] - p[i][0]) * (y - p[i][1]) / (p[j][1] - p[i][1]) + p[i][0])
-      in = !in;
-  return in;
-}
+using MDCS_test::boundary_distance;
+using MDCS_test::in_polygon;
 
 // Boundary data of the hexagon, linear along each edge, with heights alternating 0.3 / 0.7 at the vertices (a
 // three-fold saddle): the discrete boundary curve through the edges' samples and the relaxation's boundary nodes

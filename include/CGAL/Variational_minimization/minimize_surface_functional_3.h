@@ -132,7 +132,8 @@ Surface_cut_3 surface_min_cut_3(const Plane_arrangement_3& arrangement, const st
 }
 
 // Pseudoflow run straight on the arrangement (Surface_residual_graph_3), without the Flow_network and the
-// engine's copy of the arcs: 8 bytes per facet and 44 per cell instead of about 64 per facet and 80 per cell.
+// engine's copy of the arcs: 8 bytes per facet and 44 per cell instead of about 64 per facet and 80 per cell (a
+// polygonal domain: 1 byte per facet more).
 // The weights come from a callable; `stage_weights`: the callable computes them (the "network" stage is then
 // reported as "weights").
 template <class WeightOf, class Progress>
@@ -161,12 +162,13 @@ Surface_cut_3 surface_pseudoflow_cut_3(const Plane_arrangement_3& arrangement, c
     for(std::size_t i = 0; i < nf; ++i) {
       const Arr::Facet_index f = Arr::Facet_index(i);
       const Arr::Facet& F = arrangement.facet(f);
-      if(F.plane < Arr::number_of_walls) {
+      if(graph.is_terminal(f)) {
         const double c = graph.terminal_capacity(f);
-        const char s = side[graph.below(F)];
+        if(c == 0) continue;
+        const char s = side[graph.terminal_cell(f)];
         const bool cut = (c > 0 && !s) || (c < 0 && s);
         if(!cut) continue;
-        if(F.plane < 4) crosses_infinite_arc = true; // a tie to a terminal
+        if(graph.is_tie(f)) crosses_infinite_arc = true; // a tie to a terminal
         else (c > 0 ? source_facets : sink_facets).push_back(f);
         continue;
       }
@@ -198,10 +200,6 @@ Surface_cut_3 surface_min_cut_3(const Plane_arrangement_3& arrangement, const st
 {
   if(weights.size() != arrangement.number_of_facets())
     throw std::invalid_argument("MDCS: minimize_surface_functional_3: one weight per arrangement facet is required");
-  // A polygonal domain goes through the generic Flow_network path (with the pseudoflow engine).
-  if(problem.is_polygonal())
-    return surface_min_cut_3<CGAL::Min_cut::Pseudoflow_max_flow>(arrangement, weights, problem,
-                                                                 CGAL::Min_cut::Pseudoflow_max_flow(), progress);
   return surface_pseudoflow_cut_3(arrangement, [&](std::uint32_t f) { return weights[f]; }, problem, progress, false);
 }
 
@@ -275,8 +273,8 @@ inline Minimal_surface_3 minimize_surface_functional_3(const Plane_arrangement_3
 
   With `CGAL::Min_cut::Pseudoflow_max_flow` (the default) the weights go straight into the solver's residual
   capacities and no weight vector is kept: the weights of the surface's facets are computed again at the end.
-  This is the leanest path (rectangular domains; a polygonal domain gets a weight vector and the generic path): besides the arrangement, 8 bytes per facet and 44 per cell (plus 1 per cell for the
-  sides). Other engines get a weight vector and the generic path. `progress` sees the stages `"weights"` and
+  This is the leanest path: besides the arrangement, 8 bytes per facet and 44 per cell (plus 1 per cell for the
+  sides, and on a polygonal domain 1 per facet for its kind). Other engines get a weight vector and the generic path. `progress` sees the stages `"weights"` and
   `"max-flow"` (and `"network"` for other engines).
   \throws std::invalid_argument if the problem is invalid or G is negative or NaN somewhere.
 */
@@ -289,7 +287,7 @@ Minimal_surface_3 minimize_surface_functional_3(const Plane_arrangement_3& arran
   problem.validate();
   if(quadrature_level < 0 || quadrature_level > 8)
     throw std::invalid_argument("MDCS: minimize_surface_functional_3: quadrature_level must be in [0, 8]");
-  if(!std::is_same<Engine, CGAL::Min_cut::Pseudoflow_max_flow>::value || problem.is_polygonal()) {
+  if(!std::is_same<Engine, CGAL::Min_cut::Pseudoflow_max_flow>::value) {
     const std::vector<double> w = surface_facet_weights_3(arrangement, problem, G, quadrature_level, progress);
     return minimize_surface_functional_3(arrangement, w, problem, engine, progress);
   }

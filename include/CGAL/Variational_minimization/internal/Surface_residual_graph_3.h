@@ -35,6 +35,12 @@ namespace internal {
 // residual 0, and r[f] holds their terminal capacity instead (> 0: source arc, < 0: sink arc, 0: none).
 // Terminals keep the finite bound M = 1 + 2 * (sum of finite capacities) for an infinite tie, as in
 // CGAL::Min_cut::Max_flow_problem, so that excesses stay finite; interior arcs keep true infinities.
+//
+// A polygonal domain (the network of polygon_dual_network_3()): a facet between two cells over Ω is an interior
+// arc as above; a facet between a cell over Ω and the outside (or the box) is a terminal facet of that cell, like a
+// wall: floor and ceiling facets with their weight, vertical facets tied to the source below the lower boundary
+// curve and to the sink above the upper one; a facet with no cell over Ω gives no arc (residual 0, and G is not
+// evaluated on it). Cells outside Ω stay isolated nodes. One byte per facet says which of these it is.
 class Surface_residual_graph_3
 {
 public:
@@ -45,7 +51,7 @@ public:
   // increasing order of f).
   template <class WeightOf>
   Surface_residual_graph_3(const Arr& arrangement, const WeightOf& weight_of, const Surface_problem_3& problem)
-    : a_(arrangement)
+    : a_(arrangement), polygonal_(problem.is_polygonal())
   {
     const std::size_t nf = arrangement.number_of_facets();
     if(arrangement.number_of_cells() > std::size_t(0xFFFFFFFFu) - 3)
@@ -55,40 +61,75 @@ public:
       const auto c = arrangement.plane(Index(p)).c;
       sign_[p] = static_cast<signed char>(c > 0 ? 1 : (c < 0 ? -1 : 0));
     }
-    const std::array<Wall_curve_3, 4> lower = wall_curves_3(problem.boundary_loop(false));
-    const std::array<Wall_curve_3, 4> upper = wall_curves_3(problem.boundary_loop(true));
     const double inf = std::numeric_limits<double>::infinity();
     r_.resize(nf);
     double finite_sum = 0;
     std::size_t ties = 0;
-    for(std::size_t i = 0; i < nf; ++i) {
-      const Index f = Index(i);
-      const Index p = arrangement.facet(f).plane;
-      if(p < 4) {
-        const int tie = side_wall_tie_3(arrangement, f, lower, upper);
-        r_[i] = double(tie); // scaled by M below
-        ties += tie != 0 ? 1 : 0;
-        continue;
-      }
-      if(p >= Arr::number_of_walls && sign_[p] == 0) {
-        r_[i] = inf;
-        continue;
-      }
+    // The weight of a non-vertical facet, checked.
+    const auto checked_weight = [&](Index f) {
       const double w = weight_of(f);
       // Written as !(w >= 0) so that NaN is rejected too.
       if(!(w >= 0) || w == inf)
-        throw std::invalid_argument("MDCS: minimize_surface_functional_3: facet " + std::to_string(i) +
+        throw std::invalid_argument("MDCS: minimize_surface_functional_3: facet " + std::to_string(f) +
                                     " has weight " + std::to_string(w) +
                                     "; the weight of a non-vertical facet must be finite and >= 0");
       finite_sum += w;
-      r_[i] = p == 5 ? -w : w; // the ceiling's arcs go to the sink
+      return w;
+    };
+    if(polygonal_) {
+      kind_.assign(nf, no_arc);
+      const std::vector<char> inside = surface_domain_cells_3(arrangement, problem);
+      const Polygon_wall_curves_3 curves(problem);
+      for(std::size_t i = 0; i < nf; ++i) {
+        const Index f = Index(i);
+        const Arr::Facet& F = arrangement.facet(f);
+        const bool in_n = F.negative_cell != Arr::null_index && inside[F.negative_cell];
+        const bool in_p = F.positive_cell != Arr::null_index && inside[F.positive_cell];
+        r_[i] = 0;
+        if(!in_n && !in_p) continue;
+        if(in_n && in_p) {
+          kind_[i] = interior;
+          r_[i] = sign_[F.plane] == 0 ? inf : checked_weight(f);
+          continue;
+        }
+        kind_[i] = in_n ? terminal_negative : terminal_positive;
+        if(F.plane == 4) r_[i] = checked_weight(f);
+        else if(F.plane == 5) r_[i] = -checked_weight(f);
+        else if(sign_[F.plane] != 0)
+          throw std::logic_error("MDCS: internal error: a non-vertical facet between a cell over the domain and the "
+                                 "outside (are the planes of the polygon's edges in the arrangement?)");
+        else {
+          const int tie = curves.tie(arrangement, f);
+          r_[i] = double(tie); // scaled by M below
+          ties += tie != 0 ? 1 : 0;
+        }
+      }
+    } else {
+      const std::array<Wall_curve_3, 4> lower = wall_curves_3(problem.boundary_loop(false));
+      const std::array<Wall_curve_3, 4> upper = wall_curves_3(problem.boundary_loop(true));
+      for(std::size_t i = 0; i < nf; ++i) {
+        const Index f = Index(i);
+        const Index p = arrangement.facet(f).plane;
+        if(p < 4) {
+          const int tie = side_wall_tie_3(arrangement, f, lower, upper);
+          r_[i] = double(tie); // scaled by M below
+          ties += tie != 0 ? 1 : 0;
+          continue;
+        }
+        if(p >= Arr::number_of_walls && sign_[p] == 0) {
+          r_[i] = inf;
+          continue;
+        }
+        const double w = checked_weight(f);
+        r_[i] = p == 5 ? -w : w; // the ceiling's arcs go to the sink
+      }
     }
     bound_ = 1 + 2 * finite_sum;
     if(!std::isfinite(bound_) || !std::isfinite(finite_sum + double(ties + 1) * bound_))
       throw std::domain_error("MDCS: minimize_surface_functional_3: the facet weights are too large (their sum, or "
                               "the bound that replaces infinite capacities, overflows); scale them down");
     for(std::size_t i = 0; i < nf; ++i)
-      if(arrangement.facet(Index(i)).plane < 4) r_[i] *= bound_;
+      if(is_tie(Index(i))) r_[i] *= bound_;
   }
 
   std::size_t number_of_nodes() const { return a_.number_of_cells(); }
@@ -97,16 +138,15 @@ public:
 
   Index head(Index x, Index f) const
   {
+    if(is_terminal(f)) return x;
     const Arr::Facet& F = a_.facet(f);
-    if(F.plane < Arr::number_of_walls) return x;
     return F.negative_cell == x ? F.positive_cell : F.negative_cell;
   }
 
   double residual(Index x, Index f) const
   {
-    const Arr::Facet& F = a_.facet(f);
-    if(F.plane < Arr::number_of_walls) return 0;
-    return x == below(F) ? r_[f] : std::numeric_limits<double>::infinity();
+    if(is_terminal(f)) return 0;
+    return x == below(a_.facet(f)) ? r_[f] : std::numeric_limits<double>::infinity();
   }
 
   Index reverse(Index, Index f) const { return f; }
@@ -135,31 +175,52 @@ public:
     // M / 2) as M too, an upper bound that needs no stored weights.
     double total = source + sink;
     for(Index f : a_.cell_facets(x))
-      if(a_.facet(f).plane >= Arr::number_of_walls) total += 2 * bound_;
+      if(!is_terminal(f)) total += 2 * bound_;
     return total;
   }
 
   /// The bound that stands for an infinite terminal capacity.
   double infinite_capacity() const { return bound_; }
 
-  /// The cell of facet `f` below it (the tail of its finite arc); for a wall facet, its cell inside the box.
-  Index below(const Arr::Facet& F) const
+  /// The cell below an interior facet (the tail of its finite arc).
+  Index below(const Arr::Facet& F) const { return sign_[F.plane] > 0 ? F.negative_cell : F.positive_cell; }
+
+  /// Whether facet `f` is no arc between two nodes: a wall facet of a rectangle, or a facet of a polygonal domain
+  /// with at most one cell over Ω (terminal arc of that cell, or no arc at all).
+  bool is_terminal(Index f) const
   {
-    if(F.plane < Arr::number_of_walls) return F.negative_cell == Arr::null_index ? F.positive_cell : F.negative_cell;
-    return sign_[F.plane] > 0 ? F.negative_cell : F.positive_cell;
+    return polygonal_ ? kind_[f] != interior : a_.facet(f).plane < Arr::number_of_walls;
   }
 
-  /// The terminal capacity of a wall facet: > 0 an arc from the source, < 0 an arc to the sink (M for a tie).
+  /// The node a terminal facet ties (its cell inside the box, or over Ω).
+  Index terminal_cell(Index f) const
+  {
+    const Arr::Facet& F = a_.facet(f);
+    if(polygonal_) return kind_[f] == terminal_negative ? F.negative_cell : F.positive_cell;
+    return F.negative_cell == Arr::null_index ? F.positive_cell : F.negative_cell;
+  }
+
+  /// Whether terminal facet `f` is an infinite tie (a vertical facet on the boundary), not a floor or ceiling arc.
+  bool is_tie(Index f) const
+  {
+    const Index p = a_.facet(f).plane;
+    if(polygonal_) return (kind_[f] == terminal_negative || kind_[f] == terminal_positive) && p != 4 && p != 5;
+    return p < 4;
+  }
+
+  /// The terminal capacity of a terminal facet: > 0 an arc from the source, < 0 an arc to the sink (M for a tie),
+  /// 0 none.
   double terminal_capacity(Index f) const { return r_[f]; }
 
-  std::size_t memory_bytes() const { return r_.capacity() * sizeof(double) + sign_.capacity(); }
+  std::size_t memory_bytes() const { return r_.capacity() * sizeof(double) + sign_.capacity() + kind_.capacity(); }
 
 private:
   // Per node, the summed source and sink capacities, each capped at M (one tie is enough).
   void terminals(Index x, double& source, double& sink) const
   {
     for(Index f : a_.cell_facets(x)) {
-      if(a_.facet(f).plane >= Arr::number_of_walls) continue;
+      // A boundary facet of a polygonal domain is in the lists of both its cells: only its cell over Ω is tied.
+      if(!is_terminal(f) || (polygonal_ && terminal_cell(f) != x)) continue;
       const double c = r_[f];
       if(c > 0) source += c;
       else sink -= c;
@@ -168,9 +229,14 @@ private:
     sink = (std::min)(sink, bound_);
   }
 
+  // Kinds of the facets of a polygonal domain.
+  enum : char { interior = 0, terminal_negative = 1, terminal_positive = 2, no_arc = 3 };
+
   const Arr& a_;
+  bool polygonal_;
   std::vector<double> r_;
   std::vector<signed char> sign_;
+  std::vector<char> kind_; // polygonal domains only
   double bound_ = 1;
 };
 
