@@ -146,7 +146,7 @@ TEST_CASE("minimize_surface_functional_3: pseudoflow on the arrangement of a pol
       return MDCS_test::in_polygon(rounded, x, y) ? std::sqrt(1 + fx * fx + fy * fy) : std::nan("");
     };
     const std::vector<double> w = VM::surface_facet_weights_3(A, P, G);
-    // Oracle: the generic path (polygon_dual_network_3, solve_min_cut) with push-relabel and Boykov-Kolmogorov.
+    // Oracle: the generic path (build_polygon_dual_network_3, solve_min_cut) with push-relabel and Boykov-Kolmogorov.
     const VM::Minimal_surface_3 pr = generic(A, w, P, CGAL::Min_cut::Push_relabel_max_flow());
     const VM::Minimal_surface_3 bk = generic(A, w, P, CGAL::Min_cut::Boykov_kolmogorov_max_flow());
     REQUIRE(pr.is_feasible);

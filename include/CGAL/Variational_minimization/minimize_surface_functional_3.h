@@ -203,12 +203,13 @@ Surface_cut_3 surface_min_cut_3(const Plane_arrangement_3& arrangement, const st
   return surface_pseudoflow_cut_3(arrangement, [&](std::uint32_t f) { return weights[f]; }, problem, progress, false);
 }
 
-// The surface of the minimum cut of a network contracted by CGAL::Min_cut::internal::contract_terminal_nodes
-// (refinement, basin search): the cut's facets plus the facets the contraction fixed. Infeasible when the
-// contracted network or its cut is infinite.
-template <class Engine>
+// The surface of the minimum cut of a network contracted by CGAL::Min_cut::internal::contract_terminal_nodes or
+// built by Terminal_contraction (refinement, basin search): the cut's facets plus the facets the contraction fixed,
+// with the energy summed from `weights` (a weight vector or a per-facet callable). Infeasible when the contracted
+// network or its cut is infinite.
+template <class Engine, class WeightOf>
 Minimal_surface_3 surface_from_contracted_cut_3(const Plane_arrangement_3& arrangement, const Surface_problem_3& problem,
-                                                const std::vector<double>& weights,
+                                                const WeightOf& weights,
                                                 const CGAL::Min_cut::internal::Contracted_network<double>& reduced,
                                                 Engine engine)
 {

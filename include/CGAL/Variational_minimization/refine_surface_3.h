@@ -90,8 +90,7 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
     o.seed = options.seed + 104729 * std::uint64_t(r);
     const std::vector<Lattice_plane_3> planes = surface_planes_3(problem, n, o);
     const Arr arrangement(planes);
-    const std::vector<double> w = surface_facet_weights_3(arrangement, problem, G, quadrature_level);
-    surfaces.push_back(minimize_surface_functional_3(arrangement, w, problem, engine));
+    surfaces.push_back(minimize_surface_functional_3(arrangement, problem, G, quadrature_level, engine));
     if(!surfaces.back().is_feasible) throw std::invalid_argument("MDCS: refine_surface_3: a run found no surface");
     result.run_energies.push_back(surfaces.back().energy);
     if(r == 0)
@@ -151,8 +150,6 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
   reporter(std::size_t(runs));
   const Arr arrangement(result.planes);
   result.cells = arrangement.number_of_cells();
-  const std::vector<double> w = surface_facet_weights_3(arrangement, problem, G, quadrature_level);
-  CGAL::Min_cut::Flow_network<double> network = internal::surface_dual_network_3(arrangement, w, problem);
   // Cells outside the widened envelope, by an interior point (the mean of the vertices: no s_r crosses a cell),
   // are contracted into the source (label 1) or the sink (label 2).
   std::vector<char> label(arrangement.number_of_cells(), 0);
@@ -182,11 +179,21 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
       ++result.cells_above;
     }
   }
-  CGAL::Min_cut::internal::Contracted_network<double> reduced = CGAL::Min_cut::internal::contract_terminal_nodes(network, label);
-  network = CGAL::Min_cut::Flow_network<double>(); // release the full network before the solve
+  // The contracted network is built straight from the arrangement: neither the full network nor a weight vector
+  // exists, and G is integrated only over the facets that can still matter (those touching a cell inside the
+  // envelope, and those between a cell below it and one above it, which every cut crosses).
+  const auto weight_of = [&](Arr::Facet_index f) {
+    return surface_facet_weight_3(arrangement, problem, G, f, quadrature_level);
+  };
+  CGAL::Min_cut::internal::Contracted_network<double> reduced;
+  {
+    CGAL::Min_cut::internal::Terminal_contraction<double> builder(label);
+    internal::build_surface_dual_network_3(arrangement, weight_of, problem, builder);
+    reduced = builder.release();
+  }
   result.network_nodes = reduced.network.number_of_nodes();
   result.network_facets = reduced.network.number_of_facets();
-  result.surface = internal::surface_from_contracted_cut_3(arrangement, problem, w, reduced, engine);
+  result.surface = internal::surface_from_contracted_cut_3(arrangement, problem, weight_of, reduced, engine);
   reporter.finish();
   return result;
 }

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -31,50 +32,91 @@ struct Contracted_network
   bool is_finite = true;
 };
 
+// Builds a Contracted_network from the facets of the full network, given one by one in the interface of
+// Flow_network (add_facet, add_source_facet, add_sink_facet), so that the full network need not exist. A producer
+// can ask first whether a facet matters (needs_*): a facet between two nodes merged into the same terminal, a
+// source arc into a node merged into the source and a sink arc out of a node merged into the sink change no cut, so
+// their capacities need not even be computed.
 template <class Capacity>
-Contracted_network<Capacity> contract_terminal_nodes(const CGAL::Min_cut::Flow_network<Capacity>& full,
-                                                         const std::vector<char>& label)
+class Terminal_contraction
 {
   typedef CGAL::Min_cut::Flow_network<Capacity> Network;
-  const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
-  const Capacity inf = Network::infinity();
-  Contracted_network<Capacity> out;
-  out.node.assign(full.number_of_nodes(), none);
-  std::uint32_t kept = 0;
-  for(std::size_t i = 0; i < label.size(); ++i)
-    if(label[i] == 0) out.node[i] = kept++;
-  out.network.reserve(kept, full.number_of_facets(), full.number_of_source_facets() + full.number_of_sink_facets());
-  out.network.add_nodes(kept);
-  // An arc that always crosses the cut (source side -> sink side).
-  auto always = [&](Capacity c, std::uint32_t id) {
-    if(c == inf) out.is_finite = false;
-    else if(c > 0) {
-      out.constant += c;
-      out.constant_facets.push_back(id);
-    }
-  };
-  for(const typename Network::Facet& f : full.facets()) {
-    const char lu = label[f.u], lv = label[f.v];
-    if(lu == 0 && lv == 0) out.network.add_facet(out.node[f.u], out.node[f.v], f.c_uv, f.c_vu, f.id);
-    else if(lu == lv) continue;
+
+public:
+  typedef std::uint32_t Node_index;
+  typedef std::uint32_t Facet_index;
+
+  explicit Terminal_contraction(const std::vector<char>& label) : label_(label)
+  {
+    const std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+    out_.node.assign(label.size(), none);
+    std::uint32_t kept = 0;
+    for(std::size_t i = 0; i < label.size(); ++i)
+      if(label[i] == 0) out_.node[i] = kept++;
+    out_.network.add_nodes(kept);
+  }
+
+  void reserve(std::size_t facets, std::size_t terminal_facets) { out_.network.reserve(0, facets, terminal_facets); }
+
+  bool needs_facet(Node_index u, Node_index v) const { return label_[u] == 0 || label_[u] != label_[v]; }
+  bool needs_source_facet(Node_index n) const { return label_[n] != 1; }
+  bool needs_sink_facet(Node_index n) const { return label_[n] != 2; }
+
+  void add_facet(Node_index u, Node_index v, Capacity c_uv, Capacity c_vu, Facet_index id)
+  {
+    const char lu = label_[u], lv = label_[v];
+    if(lu == 0 && lv == 0) out_.network.add_facet(out_.node[u], out_.node[v], c_uv, c_vu, id);
+    else if(lu == lv) return;
     else if(lu == 0) { // v is a terminal
-      if(lv == 1) { if(f.c_vu > 0) out.network.add_source_facet(out.node[f.u], f.c_vu, f.id); }
-      else if(f.c_uv > 0) out.network.add_sink_facet(out.node[f.u], f.c_uv, f.id);
+      if(lv == 1) { if(c_vu > 0) out_.network.add_source_facet(out_.node[u], c_vu, id); }
+      else if(c_uv > 0) out_.network.add_sink_facet(out_.node[u], c_uv, id);
     } else if(lv == 0) { // u is a terminal
-      if(lu == 1) { if(f.c_uv > 0) out.network.add_source_facet(out.node[f.v], f.c_uv, f.id); }
-      else if(f.c_vu > 0) out.network.add_sink_facet(out.node[f.v], f.c_vu, f.id);
-    } else if(lu == 1) always(f.c_uv, f.id); // u source, v sink
-    else always(f.c_vu, f.id);               // u sink, v source
+      if(lu == 1) { if(c_uv > 0) out_.network.add_source_facet(out_.node[v], c_uv, id); }
+      else if(c_vu > 0) out_.network.add_sink_facet(out_.node[v], c_vu, id);
+    } else if(lu == 1) always(c_uv, id); // u source, v sink
+    else always(c_vu, id);               // u sink, v source
   }
-  for(const typename Network::Terminal_facet& t : full.source_facets()) {
-    if(label[t.node] == 0) out.network.add_source_facet(out.node[t.node], t.capacity, t.id);
-    else if(label[t.node] == 2) always(t.capacity, t.id);
+
+  void add_source_facet(Node_index n, Capacity c, Facet_index id)
+  {
+    if(label_[n] == 0) out_.network.add_source_facet(out_.node[n], c, id);
+    else if(label_[n] == 2) always(c, id);
   }
-  for(const typename Network::Terminal_facet& t : full.sink_facets()) {
-    if(label[t.node] == 0) out.network.add_sink_facet(out.node[t.node], t.capacity, t.id);
-    else if(label[t.node] == 1) always(t.capacity, t.id);
+
+  void add_sink_facet(Node_index n, Capacity c, Facet_index id)
+  {
+    if(label_[n] == 0) out_.network.add_sink_facet(out_.node[n], c, id);
+    else if(label_[n] == 1) always(c, id);
   }
-  return out;
+
+  Contracted_network<Capacity> release() { return std::move(out_); }
+
+private:
+  // An arc that always crosses the cut (source side -> sink side).
+  void always(Capacity c, Facet_index id)
+  {
+    if(c == Network::infinity()) out_.is_finite = false;
+    else if(c > 0) {
+      out_.constant += c;
+      out_.constant_facets.push_back(id);
+    }
+  }
+
+  const std::vector<char>& label_;
+  Contracted_network<Capacity> out_;
+};
+
+template <class Capacity>
+Contracted_network<Capacity> contract_terminal_nodes(const CGAL::Min_cut::Flow_network<Capacity>& full,
+                                                     const std::vector<char>& label)
+{
+  typedef CGAL::Min_cut::Flow_network<Capacity> Network;
+  Terminal_contraction<Capacity> out(label);
+  out.reserve(full.number_of_facets(), full.number_of_source_facets() + full.number_of_sink_facets());
+  for(const typename Network::Facet& f : full.facets()) out.add_facet(f.u, f.v, f.c_uv, f.c_vu, f.id);
+  for(const typename Network::Terminal_facet& t : full.source_facets()) out.add_source_facet(t.node, t.capacity, t.id);
+  for(const typename Network::Terminal_facet& t : full.sink_facets()) out.add_sink_facet(t.node, t.capacity, t.id);
+  return out.release();
 }
 
 } // namespace internal

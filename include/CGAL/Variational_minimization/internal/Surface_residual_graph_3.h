@@ -36,7 +36,7 @@ namespace internal {
 // Terminals keep the finite bound M = 1 + 2 * (sum of finite capacities) for an infinite tie, as in
 // CGAL::Min_cut::Max_flow_problem, so that excesses stay finite; interior arcs keep true infinities.
 //
-// A polygonal domain (the network of polygon_dual_network_3()): a facet between two cells over Ω is an interior
+// A polygonal domain (the network of build_polygon_dual_network_3()): a facet between two cells over Ω is an interior
 // arc as above; a facet between a cell over Ω and the outside (or the box) is a terminal facet of that cell, like a
 // wall: floor and ceiling facets with their weight, vertical facets tied to the source below the lower boundary
 // curve and to the sink above the upper one; a facet with no cell over Ω gives no arc (residual 0, and G is not

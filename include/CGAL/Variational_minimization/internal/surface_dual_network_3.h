@@ -141,96 +141,120 @@ private:
   std::vector<Wall_curve_3> lower_, upper_;
 };
 
+// The networks below are written through a builder with the interface of CGAL::Min_cut::Flow_network (add_facet,
+// add_source_facet, add_sink_facet) plus needs_facet(u, v), needs_source_facet(n), needs_sink_facet(n): a facet
+// the builder does not need is skipped before its weight is asked for. `weight_of(f)` gives the weight of facet f
+// (a callable; it is called only for non-vertical facets with a cell over the domain that the builder needs).
+// Full_network_builder writes everything into a Flow_network; CGAL::Min_cut::internal::Terminal_contraction
+// builds the contracted network of adaptive refinement directly.
+struct Full_network_builder
+{
+  CGAL::Min_cut::Flow_network<double>& network;
+  typedef CGAL::Min_cut::Flow_network<double>::Node_index Node_index;
+  typedef CGAL::Min_cut::Flow_network<double>::Facet_index Facet_index;
+  bool needs_facet(Node_index, Node_index) const { return true; }
+  bool needs_source_facet(Node_index) const { return true; }
+  bool needs_sink_facet(Node_index) const { return true; }
+  void add_facet(Node_index u, Node_index v, double c_uv, double c_vu, Facet_index id) { network.add_facet(u, v, c_uv, c_vu, id); }
+  void add_source_facet(Node_index n, double c, Facet_index id) { network.add_source_facet(n, c, id); }
+  void add_sink_facet(Node_index n, double c, Facet_index id) { network.add_sink_facet(n, c, id); }
+};
+
 // The arcs of a facet between two cells over the domain: a non-vertical facet separates the cell below from the
 // cell above, the arc below->above costs the facet weight and the reverse arc is infinite (so every finite cut is
 // the graph of a function); a vertical facet is infinite both ways.
-inline void add_interior_facet_3(CGAL::Min_cut::Flow_network<double>& network, const Plane_arrangement_3::Facet& x,
-                                 const Lattice_plane_3& p, double weight,
-                                 CGAL::Min_cut::Flow_network<double>::Facet_index id)
+template <class Builder, class WeightOf>
+void add_interior_facet_3(Builder& out, const Plane_arrangement_3::Facet& x, const Lattice_plane_3& p,
+                          const WeightOf& weight_of, Plane_arrangement_3::Facet_index f)
 {
-  const double inf = CGAL::Min_cut::Flow_network<double>::infinity();
-  if(p.c == 0) network.add_facet(x.negative_cell, x.positive_cell, inf, inf, id);
-  else if(p.c > 0) network.add_facet(x.negative_cell, x.positive_cell, weight, inf, id);
-  else network.add_facet(x.positive_cell, x.negative_cell, weight, inf, id);
+  const double inf = std::numeric_limits<double>::infinity();
+  if(!out.needs_facet(x.negative_cell, x.positive_cell)) return;
+  if(p.c == 0) out.add_facet(x.negative_cell, x.positive_cell, inf, inf, f);
+  else if(p.c > 0) out.add_facet(x.negative_cell, x.positive_cell, weight_of(f), inf, f);
+  else out.add_facet(x.positive_cell, x.negative_cell, weight_of(f), inf, f);
 }
 
 // A polygonal domain: cells outside Ω get no arcs; a facet between a cell over Ω and the outside (or the box) ties
 // that cell like a side wall: floor and ceiling facets with their weight, vertical facets infinitely below the
 // lower curve (source) and above the upper one (sink).
-inline CGAL::Min_cut::Flow_network<double> polygon_dual_network_3(const Plane_arrangement_3& arrangement,
-                                                                  const std::vector<double>& weights,
-                                                                  const Surface_problem_3& problem)
+template <class Builder, class WeightOf>
+void build_polygon_dual_network_3(const Plane_arrangement_3& arrangement, const WeightOf& weight_of,
+                                  const Surface_problem_3& problem, Builder& out)
 {
-  typedef CGAL::Min_cut::Flow_network<double> Network;
   typedef Plane_arrangement_3 Arr;
-  const double inf = Network::infinity();
+  const double inf = std::numeric_limits<double>::infinity();
   const std::vector<char> inside = surface_domain_cells_3(arrangement, problem);
   const Polygon_wall_curves_3 curves(problem);
-  Network network;
-  network.reserve(arrangement.number_of_cells(), arrangement.number_of_facets(), 0);
-  network.add_nodes(arrangement.number_of_cells());
   for(std::size_t i = 0; i < arrangement.number_of_facets(); ++i) {
     const Arr::Facet_index f = Arr::Facet_index(i);
     const Arr::Facet& x = arrangement.facet(f);
-    const Network::Facet_index id = Network::Facet_index(i);
     const bool in_n = x.negative_cell != Arr::null_index && inside[x.negative_cell];
     const bool in_p = x.positive_cell != Arr::null_index && inside[x.positive_cell];
     if(!in_n && !in_p) continue;
     const Lattice_plane_3& p = arrangement.plane(x.plane);
     if(in_n && in_p) {
-      add_interior_facet_3(network, x, p, weights[i], id);
+      add_interior_facet_3(out, x, p, weight_of, f);
       continue;
     }
     const Arr::Cell_index cell = in_n ? x.negative_cell : x.positive_cell;
-    if(x.plane == 4) network.add_source_facet(cell, weights[i], id);
-    else if(x.plane == 5) network.add_sink_facet(cell, weights[i], id);
-    else if(p.c != 0)
+    if(x.plane == 4) {
+      if(out.needs_source_facet(cell)) out.add_source_facet(cell, weight_of(f), f);
+    } else if(x.plane == 5) {
+      if(out.needs_sink_facet(cell)) out.add_sink_facet(cell, weight_of(f), f);
+    } else if(p.c != 0)
       throw std::logic_error("MDCS: internal error: a non-vertical facet between a cell over the domain and the "
                              "outside (are the planes of the polygon's edges in the arrangement?)");
     else {
       const int tie = curves.tie(arrangement, f);
-      if(tie > 0) network.add_source_facet(cell, inf, id);
-      else if(tie < 0) network.add_sink_facet(cell, inf, id);
+      if(tie > 0 && out.needs_source_facet(cell)) out.add_source_facet(cell, inf, f);
+      else if(tie < 0 && out.needs_sink_facet(cell)) out.add_sink_facet(cell, inf, f);
     }
   }
-  return network;
 }
 
 // Cells are nodes. A non-vertical facet separates the cell below from the cell above: the arc below->above costs
 // the facet weight, the reverse arc is infinite, so every finite cut is the graph of a function. Vertical facets
 // are infinite both ways. Floor facets tie their cell to the source, ceiling facets to the sink, with their weight.
 // Side-wall facets below the lower boundary curve tie their cell to the source, above the upper curve to the sink
-// (infinitely); those between the curves (relaxed boundary) get no arc.
+// (infinitely); those between the curves (relaxed boundary) get no arc. A polygonal domain: see above.
+template <class Builder, class WeightOf>
+void build_surface_dual_network_3(const Plane_arrangement_3& arrangement, const WeightOf& weight_of,
+                                  const Surface_problem_3& problem, Builder& out)
+{
+  if(problem.is_polygonal()) return build_polygon_dual_network_3(arrangement, weight_of, problem, out);
+  typedef Plane_arrangement_3 Arr;
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::array<Wall_curve_3, 4> lower = wall_curves_3(problem.boundary_loop(false));
+  const std::array<Wall_curve_3, 4> upper = wall_curves_3(problem.boundary_loop(true));
+  for(std::size_t i = 0; i < arrangement.number_of_facets(); ++i) {
+    const Arr::Facet_index f = Arr::Facet_index(i);
+    const Arr::Facet& x = arrangement.facet(f);
+    const Arr::Cell_index inside = x.negative_cell == Arr::null_index ? x.positive_cell : x.negative_cell;
+    if(x.plane == 4) {
+      if(out.needs_source_facet(inside)) out.add_source_facet(inside, weight_of(f), f);
+    } else if(x.plane == 5) {
+      if(out.needs_sink_facet(inside)) out.add_sink_facet(inside, weight_of(f), f);
+    } else if(x.plane < 4) {
+      const int tie = side_wall_tie_3(arrangement, f, lower, upper);
+      if(tie > 0 && out.needs_source_facet(inside)) out.add_source_facet(inside, inf, f);
+      else if(tie < 0 && out.needs_sink_facet(inside)) out.add_sink_facet(inside, inf, f);
+    } else {
+      add_interior_facet_3(out, x, arrangement.plane(x.plane), weight_of, f);
+    }
+  }
+}
+
+// The whole network as a Flow_network, from a weight vector.
 inline CGAL::Min_cut::Flow_network<double> surface_dual_network_3(const Plane_arrangement_3& arrangement,
                                                                   const std::vector<double>& weights,
                                                                   const Surface_problem_3& problem)
 {
-  if(problem.is_polygonal()) return polygon_dual_network_3(arrangement, weights, problem);
-  typedef CGAL::Min_cut::Flow_network<double> Network;
-  typedef Plane_arrangement_3 Arr;
-  const double inf = Network::infinity();
-  const std::array<Wall_curve_3, 4> lower = wall_curves_3(problem.boundary_loop(false));
-  const std::array<Wall_curve_3, 4> upper = wall_curves_3(problem.boundary_loop(true));
-  Network network;
+  CGAL::Min_cut::Flow_network<double> network;
   network.reserve(arrangement.number_of_cells(), arrangement.number_of_facets(), 0);
   network.add_nodes(arrangement.number_of_cells());
-  for(std::size_t i = 0; i < arrangement.number_of_facets(); ++i) {
-    const Arr::Facet_index f = Arr::Facet_index(i);
-    const Arr::Facet& x = arrangement.facet(f);
-    const Network::Facet_index id = Network::Facet_index(i);
-    const Arr::Cell_index inside = x.negative_cell == Arr::null_index ? x.positive_cell : x.negative_cell;
-    if(x.plane == 4) {
-      network.add_source_facet(inside, weights[i], id);
-    } else if(x.plane == 5) {
-      network.add_sink_facet(inside, weights[i], id);
-    } else if(x.plane < 4) {
-      const int tie = side_wall_tie_3(arrangement, f, lower, upper);
-      if(tie > 0) network.add_source_facet(inside, inf, id);
-      else if(tie < 0) network.add_sink_facet(inside, inf, id);
-    } else {
-      add_interior_facet_3(network, x, arrangement.plane(x.plane), weights[i], id);
-    }
-  }
+  Full_network_builder out{network};
+  build_surface_dual_network_3(arrangement, [&](Plane_arrangement_3::Facet_index f) { return weights[f]; }, problem,
+                               out);
   return network;
 }
 
