@@ -10,7 +10,8 @@
 //   (the *side lobes*, rooted at P0 and P1 with offsets sigma + |S P0|, sigma + |S P1|). A lobe rooted at
 //   a saddle or boundary vertex is exactly the pseudo-source MMP needs there; a lobe rooted inside an edge
 //   covers any numerical gap between neighbouring windows.
-// - Windows come out of a 4-ary heap by their minimal distance (lazy deletion by a stamp); they are stored
+// - Windows come out of a radix heap (double keys; a 4-ary heap otherwise) by their minimal distance (lazy
+//   deletion by a stamp); they are stored
 //   in fixed-size blocks (Window_store.h) and freed windows are reused.
 // - The windows of an edge leave the propagation's store as soon as the front has passed the edge's largest
 //   value (a second heap of edges keyed by that value): the full-field mode first copies them, compacted,
@@ -29,6 +30,7 @@
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_window.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Quaternary_heap.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/Radix_heap.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/window_edge_envelope.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/window_field.h>
 
@@ -38,6 +40,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -654,7 +657,10 @@ private:
   }
 
 
-  Quaternary_heap<Heap_entry> heap_;
+  // Events by distance: a radix heap for double keys (monotone: nothing is pushed below the front), a 4-ary heap
+  // for other number types.
+  typename std::conditional<std::is_same<FT, double>::value, Radix_heap<Heap_entry>, Quaternary_heap<Heap_entry>>::type
+    heap_;
   Quaternary_heap<Heap_entry> release_heap_; // edges to release, by their largest value
   std::vector<char> release_queued_;         // per edge: has an entry in release_heap_
   std::size_t since_release_ = 0, release_interval_ = 1024;
