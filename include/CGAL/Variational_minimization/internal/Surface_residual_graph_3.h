@@ -62,7 +62,6 @@ public:
       sign_[p] = static_cast<signed char>(c > 0 ? 1 : (c < 0 ? -1 : 0));
     }
     const double inf = std::numeric_limits<double>::infinity();
-    r_.resize(nf);
     double finite_sum = 0;
     std::size_t ties = 0;
     // The weight of a non-vertical facet, checked.
@@ -76,60 +75,19 @@ public:
       finite_sum += w;
       return w;
     };
-    if(polygonal_) {
-      kind_.assign(nf, no_arc);
-      const std::vector<char> inside = surface_domain_cells_3(arrangement, problem);
-      const Polygon_wall_curves_3 curves(problem);
-      for(std::size_t i = 0; i < nf; ++i) {
-        const Index f = Index(i);
-        const Arr::Facet& F = arrangement.facet(f);
-        const bool in_n = F.negative_cell != Arr::null_index && inside[F.negative_cell];
-        const bool in_p = F.positive_cell != Arr::null_index && inside[F.positive_cell];
-        r_[i] = 0;
-        if(!in_n && !in_p) continue;
-        if(in_n && in_p) {
-          kind_[i] = interior;
-          r_[i] = sign_[F.plane] == 0 ? inf : checked_weight(f);
-          continue;
-        }
-        kind_[i] = in_n ? terminal_negative : terminal_positive;
-        if(F.plane == 4) r_[i] = checked_weight(f);
-        else if(F.plane == 5) r_[i] = -checked_weight(f);
-        else if(sign_[F.plane] != 0)
-          throw std::logic_error("MDCS: internal error: a non-vertical facet between a cell over the domain and the "
-                                 "outside (are the planes of the polygon's edges in the arrangement?)");
-        else {
-          const int tie = curves.tie(arrangement, f);
-          r_[i] = double(tie); // scaled by M below
-          ties += tie != 0 ? 1 : 0;
-        }
-      }
-    } else {
-      const std::array<Wall_curve_3, 4> lower = wall_curves_3(problem.boundary_loop(false));
-      const std::array<Wall_curve_3, 4> upper = wall_curves_3(problem.boundary_loop(true));
-      for(std::size_t i = 0; i < nf; ++i) {
-        const Index f = Index(i);
-        const Index p = arrangement.facet(f).plane;
-        if(p < 4) {
-          const int tie = side_wall_tie_3(arrangement, f, lower, upper);
-          r_[i] = double(tie); // scaled by M below
-          ties += tie != 0 ? 1 : 0;
-          continue;
-        }
-        if(p >= Arr::number_of_walls && sign_[p] == 0) {
-          r_[i] = inf;
-          continue;
-        }
-        const double w = checked_weight(f);
-        r_[i] = p == 5 ? -w : w; // the ceiling's arcs go to the sink
-      }
-    }
+    // The arcs come from the builder that also writes the Flow_network of the generic path
+    // (build_surface_dual_network_3), so both paths classify the facets the same way.
+    r_.assign(nf, 0.0);
+    if(polygonal_) kind_.assign(nf, no_arc);
+    Residual_builder out{*this, ties};
+    build_surface_dual_network_3(arrangement, checked_weight, problem, out);
     bound_ = 1 + 2 * finite_sum;
     if(!std::isfinite(bound_) || !std::isfinite(finite_sum + double(ties + 1) * bound_))
       throw std::domain_error("MDCS: minimize_surface_functional_3: the facet weights are too large (their sum, or "
                               "the bound that replaces infinite capacities, overflows); scale them down");
+    // An infinite tie keeps the finite bound M instead (its sign says source or sink).
     for(std::size_t i = 0; i < nf; ++i)
-      if(is_tie(Index(i))) r_[i] *= bound_;
+      if(is_tie(Index(i)) && r_[i] != 0) r_[i] = r_[i] > 0 ? bound_ : -bound_;
   }
 
   std::size_t number_of_nodes() const { return a_.number_of_cells(); }
@@ -215,6 +173,31 @@ public:
   std::size_t memory_bytes() const { return r_.capacity() * sizeof(double) + sign_.capacity() + kind_.capacity(); }
 
 private:
+  // Fills the residuals from the dual network's arcs: an interior arc below->above holds its capacity (infinite for
+  // a vertical facet); a terminal arc holds +c (from the source) or -c (to the sink), +-infinity for a tie until M
+  // is known. Facets without an arc keep 0.
+  struct Residual_builder
+  {
+    Surface_residual_graph_3& g;
+    std::size_t& ties;
+    bool needs_facet(Index, Index) const { return true; }
+    bool needs_source_facet(Index) const { return true; }
+    bool needs_sink_facet(Index) const { return true; }
+    void add_facet(Index, Index, double c_uv, double, Index f)
+    {
+      g.r_[f] = c_uv;
+      if(g.polygonal_) g.kind_[f] = interior;
+    }
+    void add_source_facet(Index n, double c, Index f) { terminal(n, c, f); }
+    void add_sink_facet(Index n, double c, Index f) { terminal(n, -c, f); }
+    void terminal(Index n, double c, Index f)
+    {
+      g.r_[f] = c;
+      if(std::isinf(c)) ++ties;
+      if(g.polygonal_) g.kind_[f] = n == g.a_.facet(f).negative_cell ? terminal_negative : terminal_positive;
+    }
+  };
+
   // Per node, the summed source and sink capacities, each capped at M (one tie is enough).
   void terminals(Index x, double& source, double& sink) const
   {
