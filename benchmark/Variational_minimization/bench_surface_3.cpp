@@ -6,9 +6,11 @@
 //      peak memory, growth exponents (Table 2.2);
 //   2. Scherk's surface: area error vs cells, raw and after relaxation;
 //   3. the blob problem (many local minima, Table 2.3): random-start local descent, one global solve, plane
-//      selection; energies, times, memory.
+//      selection; energies, times, memory;
+//   4. Scherk's surface at about 1M cells with 16 boundary segments per side: random planes against tangent-plane
+//      refinement (refine_surface_by_tangent_planes_3), raw errors per round.
 //
-//   bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3] [--csv-prefix PATH]
+//   bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3|4] [--csv-prefix PATH]
 //                   [--blob-runs N] [--blob-first SEED] [--blob-starts N] [--blob-rounds R] [--blob-planes N]
 //                   [--blob-near F] [--blob-search] [--no-global] [--blob-best E] [--blob-shift S]
 //                   [--blob-tilings T1,T2,...] [--blob-no-wide] [--jobs J]
@@ -23,7 +25,8 @@
 // (default: tilings 2,3,4 with shift 0.3 once the first stops); --blob-best E: a best energy known
 // from earlier runs, for "reaches the best"; --no-global: skip the one-solve global runs; --jobs J runs them on J threads (each run single-threaded; the peak
 // memory column is then not measured).
-// CSV files: PATH_table22.csv, PATH_scherk.csv, PATH_blobs.csv (default PATH: surface).
+// Part 4 (not in the default run, about 6 minutes: --part 4): seeds 1-3 (--quick: seed 1, 4 rounds).
+// CSV files: PATH_table22.csv, PATH_scherk.csv, PATH_blobs.csv, PATH_scherk_tangent.csv (default PATH: surface).
 
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
@@ -31,6 +34,7 @@
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/refine_surface_by_tangent_planes_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
 #include <CGAL/Variational_minimization/search_surface_basins_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
@@ -253,6 +257,75 @@ void part_scherk(bool quick, const std::string& prefix)
     std::printf("  limit of the raw energy with %2d boundary segments per side (area spanning the piecewise linear "
                 "boundary, 160^2 grid): %.8f, error %.3e\n", segments, e, (e - exact) / exact);
   }
+}
+
+// Part 4: the discretisation excess of random planes (about +4% of the area at 1M cells with 16 segments per
+// side, whose boundary curve alone gives -0.32%) against tangent-plane refinement at the same size.
+void part_scherk_tangent(bool quick, const std::string& prefix)
+{
+  const double exact = VM::scherk_surface_area(1.2);
+  const int segments = 16, rounds = quick ? 4 : 12;
+  const long random_planes = 260, tangent_planes = 200;
+  std::printf("\n== 4. Scherk's surface, %d boundary segments per side (limit of the raw energy -0.32%%): random planes "
+              "(%ld) against tangent-plane refinement (%ld planes, %d rounds, fit radius 0.2); slope-limited "
+              "|slope| <= 3, 20%% pencils. Raw errors: no relaxation.\n\n", segments, random_planes, tangent_planes,
+              rounds);
+  const VM::Surface_problem_3 P = VM::scherk_surface_problem_3(segments);
+  mdcs_bench::Table table({"method", "seed", "round", "planes", "cells", "raw_energy", "raw_rel_error", "seconds",
+                           "peak_MiB"});
+  std::vector<double> random_errors, tangent_errors, tangent_cells, max_cells;
+  std::vector<std::uint64_t> seeds = {1u, 2u, 3u};
+  if(quick) seeds = {1u};
+  for(std::uint64_t seed : seeds) {
+    VM::Surface_plane_options_3 o;
+    o.distribution = VM::Plane_distribution_3::slope_limited;
+    o.max_slope = 3;
+    o.pencil_fraction = 0.2;
+    o.seed = seed;
+    {
+      mdcs_bench::reset_peak_rss();
+      const double t0 = mdcs_bench::cpu_seconds();
+      const VM::Plane_arrangement_3 A(VM::surface_planes_3(P, std::size_t(random_planes), o));
+      const VM::Minimal_surface_3 s = VM::minimize_surface_functional_3(A, P, VM::Area_functional_3());
+      const double e = (s.energy - exact) / exact;
+      table.add_row({"random", std::to_string(seed), "-", std::to_string(random_planes),
+                     std::to_string(A.number_of_cells()), fmt(s.energy, "%.10g"), fmt(e, "%.3e"),
+                     fmt(mdcs_bench::cpu_seconds() - t0), fmt(mdcs_bench::peak_rss_mib(), "%.0f")});
+      random_errors.push_back(e);
+    }
+    mdcs_bench::reset_peak_rss();
+    VM::Tangent_refinement_options_3 t;
+    t.rounds = rounds;
+    // The callback sees fraction k / (rounds + 1) when round k starts: the CPU time at each start.
+    std::vector<double> round_start(std::size_t(rounds) + 2, -1);
+    const double t0 = mdcs_bench::cpu_seconds();
+    const auto progress = [&](const char*, double fraction) {
+      const std::size_t k = std::size_t(std::llround(fraction * (rounds + 1)));
+      if(k < round_start.size() && round_start[k] < 0) round_start[k] = mdcs_bench::cpu_seconds();
+      return true;
+    };
+    const VM::Tangent_refinement_result_3 r = VM::refine_surface_by_tangent_planes_3(
+      P, VM::Area_functional_3(), std::size_t(tangent_planes), t, o, 1, CGAL::Min_cut::Default_max_flow_engine(),
+      progress);
+    const double total = mdcs_bench::cpu_seconds() - t0, peak = mdcs_bench::peak_rss_mib();
+    for(std::size_t k = 0; k < r.round_energies.size(); ++k)
+      table.add_row({"tangent", std::to_string(seed), std::to_string(k), std::to_string(tangent_planes),
+                     std::to_string(r.round_cells[k]), fmt(r.round_energies[k], "%.10g"),
+                     fmt((r.round_energies[k] - exact) / exact, "%.3e"),
+                     fmt(round_start[k + 1] - round_start[k]), "-"});
+    table.add_row({"tangent-best", std::to_string(seed), std::to_string(r.best_round), std::to_string(tangent_planes),
+                   std::to_string(r.round_cells[std::size_t(r.best_round)]), fmt(r.surface.energy, "%.10g"),
+                   fmt((r.surface.energy - exact) / exact, "%.3e"), fmt(total), fmt(peak, "%.0f")});
+    tangent_errors.push_back((r.surface.energy - exact) / exact);
+    tangent_cells.push_back(double(r.round_cells[std::size_t(r.best_round)]));
+    max_cells.push_back(double(*std::max_element(r.round_cells.begin(), r.round_cells.end())));
+  }
+  table.print();
+  table.write_csv(prefix + "_scherk_tangent.csv");
+  std::printf("\nmedians over the seeds: random planes raw error %.3e; tangent-plane refinement raw error %.3e "
+              "(best round's arrangement %.0f cells; largest round %.0f cells)\n",
+              mdcs_bench::median(random_errors), mdcs_bench::median(tangent_errors), mdcs_bench::median(tangent_cells),
+              mdcs_bench::median(max_cells));
 }
 
 // The settings of part 3 (command line: --blob-runs, --blob-first, --blob-starts, --blob-rounds, --blob-planes,
@@ -547,7 +620,7 @@ int main(int argc, char** argv)
     }
     else if(a == "--jobs" && i + 1 < argc) blobs.jobs = std::max(1, std::atoi(argv[++i]));
     else {
-      std::fprintf(stderr, "usage: bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3] "
+      std::fprintf(stderr, "usage: bench_surface_3 [--quick] [--large] [--budget SECONDS] [--part 1|2|3|4] "
                            "[--csv-prefix PATH]\n       [--blob-runs N] [--blob-first SEED] [--blob-starts N] "
                            "[--blob-rounds R] [--blob-planes N] [--blob-near F] [--blob-search] [--no-global]\n"
                            "       [--blob-best E] [--blob-shift S] [--blob-tilings T1,T2,...] [--blob-no-wide] [--jobs J]\n");
@@ -557,5 +630,6 @@ int main(int argc, char** argv)
   if(part == 0 || part == 1) part_table22(quick, large, budget, prefix);
   if(part == 0 || part == 2) part_scherk(quick, prefix);
   if(part == 0 || part == 3) part_blobs(quick, prefix, blobs);
+  if(part == 4) part_scherk_tangent(quick, prefix);
   return 0;
 }

@@ -13,6 +13,7 @@
 #include <CGAL/Variational_minimization/relax_surface_3.h>
 #include <CGAL/Variational_minimization/search_surface_basins_3.h>
 #include <CGAL/Variational_minimization/refine_surface_3.h>
+#include <CGAL/Variational_minimization/refine_surface_by_tangent_planes_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
 #include <CGAL/Variational_minimization/surface_facet_weights_3.h>
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
@@ -60,6 +61,10 @@ inline const char* surface_usage()
     "  --plane-selection K plane selection with K iterations (default 1: a single solve)\n"
     "  --refine R          adaptive refinement: R runs give an envelope, a new arrangement of N planes keeps\n"
     "                      their optima's planes and adds planes inside it (default 0: off)\n"
+    "  --tangent-rounds K  tangent-plane refinement: K more arrangements of N planes, each fitted to the previous\n"
+    "                      optimum (tangent planes, boundary pencils with its slope); the best round is kept\n"
+    "                      (default 0: off; for smooth minimisers such as scherk, with --segments 16)\n"
+    "  --fit-radius R      radius of those fits, share of the domain's shorter side (default 0.2)\n"
     "  --relax             continue with local relaxation on 20^2, 40^2, 80^2 grids (L-BFGS; on a polygonal\n"
     "                      domain: on Delaunay meshes of the polygon with the edge lengths of those grids)\n"
     "  --basin-search      with --plane-selection K: relax every round optimum, then search neighbouring basins\n"
@@ -87,6 +92,8 @@ struct Surface_settings
   double pencil_fraction = 0.2;
   long plane_selection = 1;
   long refine = 0;
+  long tangent_rounds = 0;
+  double fit_radius = 0.2;
   bool relax = false;
   bool basin_search = false;
   long descents = 0;
@@ -105,6 +112,9 @@ struct Surface_run
   bool has_relaxed = false;
   std::vector<double> selection_energies;
   std::vector<double> refine_energies;
+  std::vector<double> tangent_energies;
+  std::vector<std::size_t> tangent_cells;
+  int tangent_best = 0;
   std::size_t refine_below = 0, refine_above = 0, refine_nodes = 0, refine_outside = 0;
   double exact = NAN;
   std::size_t cells = 0, facets = 0, vertices = 0, pencils = 0;
@@ -225,12 +235,19 @@ inline Surface_settings parse_surface_settings(const Options& o)
   s.plane_selection = o.integer("plane-selection", s.plane_selection, 1);
   s.refine = o.integer("refine", s.refine, 0);
   if(s.refine > 0 && s.plane_selection > 1) throw Usage_error("--refine and --plane-selection exclude each other");
+  s.tangent_rounds = o.integer("tangent-rounds", s.tangent_rounds, 0);
+  if(s.tangent_rounds > 1000) throw Usage_error("--tangent-rounds must be <= 1000");
+  if(s.tangent_rounds > 0 && (s.refine > 0 || s.plane_selection > 1))
+    throw Usage_error("--tangent-rounds excludes --refine and --plane-selection");
+  s.fit_radius = o.number("fit-radius", s.fit_radius);
+  if(!(s.fit_radius > 0 && s.fit_radius <= 1)) throw Usage_error("--fit-radius must be in (0, 1]");
   s.relax = o.has("relax");
   o.text("relax", "");
   s.basin_search = o.has("basin-search");
   o.text("basin-search", "");
   if(s.basin_search && !s.domain.empty()) throw Usage_error("--basin-search needs the problem's rectangle (not --domain)");
   if(s.basin_search && s.refine > 0) throw Usage_error("--basin-search and --refine exclude each other");
+  if(s.basin_search && s.tangent_rounds > 0) throw Usage_error("--basin-search and --tangent-rounds exclude each other");
   s.descents = o.integer("descents", s.descents, 0);
   if(s.descents > 10000) throw Usage_error("--descents must be <= 10000");
   if(s.descents > 0 && !s.domain.empty()) throw Usage_error("--descents needs the problem's rectangle (not --domain)");
@@ -378,6 +395,24 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
   po.seed = std::uint64_t(s.seed);
   run.pencils = VM3::surface_pencil_count_3(run.problem, std::size_t(s.planes), po);
   auto solve_once = [&](auto engine) {
+    if(s.tangent_rounds > 0) {
+      const auto t0 = std::chrono::steady_clock::now();
+      VM3::Tangent_refinement_options_3 to;
+      to.rounds = int(s.tangent_rounds);
+      to.fit_radius = s.fit_radius;
+      const VM3::Tangent_refinement_result_3 r = VM3::refine_surface_by_tangent_planes_3(
+        run.problem, G, std::size_t(s.planes), to, po, 1, engine, std::ref(progress));
+      run.seconds_cut = seconds_since(t0);
+      run.surface = r.surface;
+      run.tangent_energies = r.round_energies;
+      run.tangent_cells = r.round_cells;
+      run.tangent_best = r.best_round;
+      const VM3::Plane_arrangement_3 A(r.planes);
+      run.cells = A.number_of_cells();
+      run.facets = A.number_of_facets();
+      run.vertices = A.number_of_vertices();
+      return;
+    }
     if(s.refine > 0) {
       const auto t0 = std::chrono::steady_clock::now();
       const VM3::Surface_refinement_result_3 r = VM3::refine_surface_3(
@@ -513,6 +548,12 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
         << run.refine_above << " above into the sink, ";
     if(run.problem.is_polygonal()) sum << run.refine_outside << " outside the domain left out, ";
     sum << run.refine_nodes << " cells left in the network\n";
+  }
+  if(!run.tangent_energies.empty()) {
+    sum << "tangent rounds    energies (cells)";
+    for(std::size_t i = 0; i < run.tangent_energies.size(); ++i)
+      sum << ' ' << run.tangent_energies[i] << " (" << run.tangent_cells[i] << ")";
+    sum << "; best: round " << run.tangent_best << "\n";
   }
   if(std::isfinite(run.exact))
     sum << "exact area        " << run.exact << " (relative error " << std::setprecision(3)
