@@ -26,6 +26,7 @@
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/monte_carlo_functional_3.h>
 #include <CGAL/Variational_minimization/refine_surface_3.h>
 #include <CGAL/Variational_minimization/refine_surface_by_tangent_planes_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>

@@ -66,6 +66,45 @@ struct has_facet_integral<F, decltype((void)std::declval<const F&>().facet_integ
 
 } // namespace internal
 
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief A functional that is only bounded below, made non-negative: G + `shift`, with `shift` >= -inf G. Adding a
+  constant adds `shift` times |Ω| to every function's energy, so the minimiser is the same; the energy of the
+  original functional is the reported energy minus `shift * problem.domain_area()`. When G has a
+  `facet_integral`, so has the shifted functional (plus `shift` times the facet's projected area).
+*/
+template <class Functional, bool = internal::has_facet_integral<Functional>::value>
+class Shifted_functional_3
+{
+public:
+  Shifted_functional_3(const Functional& G, double shift) : G_(G), shift_(shift) {}
+  double operator()(double f, double fx, double fy, double x, double y) const { return G_(f, fx, fy, x, y) + shift_; }
+  double shift() const { return shift_; }
+  const Functional& functional() const { return G_; }
+
+protected:
+  Functional G_;
+  double shift_;
+};
+
+template <class Functional>
+class Shifted_functional_3<Functional, true> : public Shifted_functional_3<Functional, false>
+{
+public:
+  using Shifted_functional_3<Functional, false>::Shifted_functional_3;
+  double facet_integral(double A, double B, double C, const std::vector<std::array<double, 2>>& polygon) const
+  {
+    return this->G_.facet_integral(A, B, C, polygon) + this->shift_ * std::abs(internal::polygon_area_2(polygon));
+  }
+};
+
+/// Makes a `Shifted_functional_3`.
+template <class Functional>
+Shifted_functional_3<Functional> make_shifted_functional_3(const Functional& G, double shift)
+{
+  return Shifted_functional_3<Functional>(G, shift);
+}
+
 /// Area: G = sqrt(1 + f_x^2 + f_y^2). Closed form on a facet: sqrt(1 + A^2 + B^2) times its projected area.
 struct Area_functional_3
 {
