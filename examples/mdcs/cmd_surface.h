@@ -394,6 +394,13 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
   po.pencil_fraction = s.pencil_fraction;
   po.seed = std::uint64_t(s.seed);
   run.pencils = VM3::surface_pencil_count_3(run.problem, std::size_t(s.planes), po);
+  // The counts of the complex a multi-solve method ended on (only its planes come back): built once more.
+  auto record_complex = [&](const std::vector<VM3::Lattice_plane_3>& planes) {
+    const VM3::Plane_arrangement_3 A(planes);
+    run.cells = A.number_of_cells();
+    run.facets = A.number_of_facets();
+    run.vertices = A.number_of_vertices();
+  };
   auto solve_once = [&](auto engine) {
     if(s.tangent_rounds > 0) {
       const auto t0 = std::chrono::steady_clock::now();
@@ -407,10 +414,7 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
       run.tangent_energies = r.round_energies;
       run.tangent_cells = r.round_cells;
       run.tangent_best = r.best_round;
-      const VM3::Plane_arrangement_3 A(r.planes);
-      run.cells = A.number_of_cells();
-      run.facets = A.number_of_facets();
-      run.vertices = A.number_of_vertices();
+      record_complex(r.planes);
       return;
     }
     if(s.refine > 0) {
@@ -424,10 +428,7 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
       run.refine_above = r.cells_above;
       run.refine_nodes = r.network_nodes;
       run.refine_outside = r.cells_outside;
-      run.cells = r.cells;
-      const VM3::Plane_arrangement_3 A(r.planes);
-      run.facets = A.number_of_facets();
-      run.vertices = A.number_of_vertices();
+      record_complex(r.planes);
       return;
     }
     if(s.basin_search) {
@@ -438,12 +439,10 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
       run.seconds_cut = seconds_since(t0);
       run.surface = r.selection.surface;
       run.selection_energies = r.selection.energies;
-      run.cells = r.selection.cells.back();
       run.relaxed = r.search.relaxed;
       run.has_relaxed = true;
-      const VM3::Plane_arrangement_3 A(r.selection.planes);
-      run.facets = A.number_of_facets();
-      run.vertices = A.number_of_vertices();
+      record_complex(r.selection.planes);
+      run.cells = r.selection.cells.back();
       return;
     }
     if(s.plane_selection > 1) {
@@ -454,10 +453,8 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
       run.seconds_cut = seconds_since(t0);
       run.surface = r.surface;
       run.selection_energies = r.energies;
+      record_complex(r.planes);
       run.cells = r.cells.back();
-      const VM3::Plane_arrangement_3 A(r.planes);
-      run.facets = A.number_of_facets();
-      run.vertices = A.number_of_vertices();
       return;
     }
     auto t0 = std::chrono::steady_clock::now();
