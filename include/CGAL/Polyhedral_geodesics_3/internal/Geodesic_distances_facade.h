@@ -311,6 +311,7 @@ public:
 
 protected:
   Engine& engine() { return *engine_; }
+  const Engine& engine_const() const { return *engine_; }
   const Mesh& compact_mesh() const { return mesh_; }
   // Options of a derived class changed: the next query recomputes.
   void invalidate() { computed_ = false; }

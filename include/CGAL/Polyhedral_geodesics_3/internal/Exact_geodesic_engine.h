@@ -1,0 +1,159 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The engine behind Exact_geodesic_distances_3: it picks, per run, one of the two exact propagations.
+//
+// - Vertex-oriented (vertex_oriented_propagation.h): distances at the vertices only, several times faster;
+//   used for distances_only runs without a distance limit or stop targets.
+// - Window-ordered (exact_window_propagation.h, the thesis's propagation with side lobes): the full field for
+//   point queries and paths, and the early stop at a limit or at targets (its front is a distance).
+//
+// The facade calls clear(), then the option setters, then adds the sources: the choice is made at the first
+// source, when every option is known. Both engines are built on first use only.
+
+#ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_EXACT_GEODESIC_ENGINE_H
+#define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_EXACT_GEODESIC_ENGINE_H
+
+#include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/exact_window_propagation.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_propagation.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Polyhedral_geodesics_3 {
+namespace internal {
+
+template <class FT>
+class Exact_geodesic_engine
+{
+public:
+  typedef Geodesic_mesh<FT> Mesh;
+  typedef typename Mesh::Index Index;
+  typedef Exact_window_propagation<FT> Window_engine;
+  typedef Vertex_oriented_window_propagation<FT> Vertex_engine;
+
+  explicit Exact_geodesic_engine(const Mesh& mesh) : mesh_(mesh) {}
+
+  void clear()
+  {
+    keep_windows_ = true;
+    has_limit_ = false;
+    stop_targets_.clear();
+    chosen_ = false;
+    use_vertex_engine_ = false;
+  }
+
+  void set_keep_windows(bool keep) { keep_windows_ = keep; }
+  void set_distance_limit(FT limit) { limit_ = limit; has_limit_ = true; }
+  void clear_distance_limit() { has_limit_ = false; }
+  void set_stop_targets(const std::vector<Index>& targets) { stop_targets_ = targets; }
+
+  // false: distances_only runs use the window-ordered engine too (for comparisons and its statistics).
+  void set_vertex_oriented_allowed(bool allowed) { vertex_oriented_allowed_ = allowed; }
+  bool vertex_oriented_allowed() const { return vertex_oriented_allowed_; }
+  // The engine of the last run (or of the run being prepared).
+  bool uses_vertex_oriented_engine() const { return use_vertex_engine_; }
+
+  void add_vertex_source(Index v, Index id)
+  {
+    choose();
+    if(use_vertex_engine_) vertex_engine().add_vertex_source(v, id);
+    else window_engine().add_vertex_source(v, id);
+  }
+
+  void add_face_source(Index f, const std::array<FT, 3>& b, Index id)
+  {
+    choose();
+    if(use_vertex_engine_) vertex_engine().add_face_source(f, b, id);
+    else window_engine().add_face_source(f, b, id);
+  }
+
+  template <class Progress>
+  void run(Progress& progress)
+  {
+    choose();
+    if(use_vertex_engine_) vertex_engine().run(progress);
+    else window_engine().run(progress);
+  }
+
+  FT vertex_distance(Index v) const
+  {
+    return use_vertex_engine_ ? vertex_->vertex_distance(v) : windows_->vertex_distance(v);
+  }
+
+  Index vertex_source(Index v) const
+  {
+    return use_vertex_engine_ ? vertex_->vertex_source(v) : windows_->vertex_source(v);
+  }
+
+  // Point queries and paths need the full field, which only the window-ordered engine keeps (the facade
+  // checks the memory mode first).
+  Geodesic_point_distance<FT> distance_at(Index f, const std::array<FT, 3>& b) const
+  {
+    return windows_->distance_at(f, b);
+  }
+
+  template <class Emit>
+  void trace_path(Index f, const std::array<FT, 3>& b, Emit emit) const
+  {
+    windows_->trace_path(f, b, emit);
+  }
+
+  const Geodesic_statistics& statistics() const
+  {
+    static const Geodesic_statistics none;
+    if(use_vertex_engine_) return vertex_->statistics();
+    return windows_ ? windows_->statistics() : none;
+  }
+
+private:
+  void choose()
+  {
+    if(chosen_)
+      return;
+    chosen_ = true;
+    use_vertex_engine_ = vertex_oriented_allowed_ && !keep_windows_ && !has_limit_ && stop_targets_.empty();
+    if(use_vertex_engine_) {
+      vertex_engine().clear();
+      return;
+    }
+    Window_engine& w = window_engine();
+    w.clear();
+    w.set_keep_windows(keep_windows_);
+    if(has_limit_) w.set_distance_limit(limit_);
+    else w.clear_distance_limit();
+    w.set_stop_targets(stop_targets_);
+  }
+
+  Window_engine& window_engine()
+  {
+    if(!windows_)
+      windows_.reset(new Window_engine(mesh_));
+    return *windows_;
+  }
+
+  Vertex_engine& vertex_engine()
+  {
+    if(!vertex_)
+      vertex_.reset(new Vertex_engine(mesh_));
+    return *vertex_;
+  }
+
+  const Mesh& mesh_;
+  std::unique_ptr<Window_engine> windows_;
+  std::unique_ptr<Vertex_engine> vertex_;
+  bool keep_windows_ = true, has_limit_ = false, chosen_ = false, use_vertex_engine_ = false;
+  bool vertex_oriented_allowed_ = true;
+  FT limit_ = FT(0);
+  std::vector<Index> stop_targets_;
+};
+
+} // namespace internal
+} // namespace Polyhedral_geodesics_3
+} // namespace CGAL
+
+#endif // CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_EXACT_GEODESIC_ENGINE_H
