@@ -85,6 +85,33 @@ struct Geodesic_mesh
   Index opposite_vertex(Index h) const { return he_source[prev(h)]; }
 };
 
+// The outgoing compact halfedges of every vertex, as compressed rows: those of v are
+// star[star_begin[v] .. star_begin[v + 1]).
+template <class FT>
+void build_vertex_star(const Geodesic_mesh<FT>& mesh, std::vector<typename Geodesic_mesh<FT>::Index>& star_begin,
+                       std::vector<typename Geodesic_mesh<FT>::Index>& star)
+{
+  typedef typename Geodesic_mesh<FT>::Index Index;
+  const std::size_t nv = mesh.number_of_vertices, nh = 3 * mesh.number_of_faces;
+  star_begin.assign(nv + 1, 0);
+  for(std::size_t h = 0; h < nh; ++h)
+    ++star_begin[std::size_t(mesh.he_source[h]) + 1];
+  for(std::size_t v = 0; v < nv; ++v)
+    star_begin[v + 1] += star_begin[v];
+  star.assign(nh, 0);
+  std::vector<Index> fill(star_begin.begin(), star_begin.end() - 1);
+  for(std::size_t h = 0; h < nh; ++h)
+    star[std::size_t(fill[std::size_t(mesh.he_source[h])]++)] = Index(h);
+}
+
+// Shortest paths can bend only at saddle vertices (angle sum above 2 pi) and boundary vertices. Flat vertices
+// are included: rounding decides their side.
+template <class FT>
+bool is_saddle_or_boundary_vertex(const Geodesic_mesh<FT>& mesh, std::size_t v)
+{
+  return mesh.vertex_on_boundary[v] || to_double_value(mesh.vertex_angle_sum[v]) > 2 * 3.14159265358979323846 - 1e-9;
+}
+
 template <class FT>
 FT squared_distance_3(const std::array<FT, 3>& a, const std::array<FT, 3>& b)
 {

@@ -96,12 +96,9 @@ public:
 
   explicit Exact_window_propagation(const Mesh& mesh) : Base(mesh)
   {
-    // Shortest paths can pass through saddle vertices (angle sum above 2 pi) and boundary vertices only.
-    // Flat vertices are included: rounding decides their side.
     vertex_is_pseudo_source_.assign(mesh_.number_of_vertices, 0);
     for(std::size_t v = 0; v < mesh_.number_of_vertices; ++v)
-      vertex_is_pseudo_source_[v] = mesh_.vertex_on_boundary[v] ||
-                                    to_double_value(mesh_.vertex_angle_sum[v]) > 2 * 3.14159265358979323846 - 1e-9;
+      vertex_is_pseudo_source_[v] = is_saddle_or_boundary_vertex(mesh_, v);
     clear();
   }
 

@@ -232,20 +232,7 @@ private:
   }
 
   // the corners around every vertex (compressed rows of the compact halfedges by source)
-  void build_star()
-  {
-    const Mesh& m = this->mesh_;
-    const std::size_t nv = m.number_of_vertices, nh = 3 * m.number_of_faces;
-    star_begin_.assign(nv + 1, 0);
-    for(std::size_t h = 0; h < nh; ++h)
-      ++star_begin_[std::size_t(m.he_source[h]) + 1];
-    for(std::size_t v = 0; v < nv; ++v)
-      star_begin_[v + 1] += star_begin_[v];
-    star_.resize(nh);
-    std::vector<Index> fill(star_begin_.begin(), star_begin_.end() - 1);
-    for(std::size_t h = 0; h < nh; ++h)
-      star_[std::size_t(fill[std::size_t(m.he_source[h])]++)] = Index(h);
-  }
+  void build_star() { build_vertex_star(this->mesh_, star_begin_, star_); }
 
   // Per corner C (compact halfedge c, supports A = source(next(c)), B = source(prev(c))): the inverse Gram matrix
   // of (A - C, B - C), and for an obtuse corner the two virtual triangles (C, A, D) and (C, D, B).

@@ -64,23 +64,12 @@ public:
     else
       relative_tolerance_ = FT(0);
     const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
-    // outgoing halfedges of every vertex (compressed rows)
-    star_begin_.assign(nv + 1, 0);
-    for(std::size_t h = 0; h < nh; ++h)
-      ++star_begin_[std::size_t(mesh_.he_source[h]) + 1];
-    for(std::size_t v = 0; v < nv; ++v)
-      star_begin_[v + 1] += star_begin_[v];
-    star_.assign(nh, 0);
-    std::vector<Index> fill(star_begin_.begin(), star_begin_.end() - 1);
-    for(std::size_t h = 0; h < nh; ++h)
-      star_[std::size_t(fill[std::size_t(mesh_.he_source[h])]++)] = Index(h);
-    // Shortest paths bend only at saddle and boundary vertices; flat ones are included (rounding decides
-    // their side), and so are the vertices of zero-length edges (their windows are single points) and of
-    // zero-area faces.
+    build_vertex_star(mesh_, star_begin_, star_);
+    // Pseudo-sources: saddle and boundary vertices, and the vertices of zero-length edges (their windows are
+    // single points) and of zero-area faces.
     pseudo_source_.assign(nv, 0);
     for(std::size_t v = 0; v < nv; ++v)
-      pseudo_source_[v] = mesh_.vertex_on_boundary[v] ||
-                          to_double_value(mesh_.vertex_angle_sum[v]) > 2 * 3.14159265358979323846 - 1e-9;
+      pseudo_source_[v] = is_saddle_or_boundary_vertex(mesh_, v);
     for(std::size_t h = 0; h < nh; ++h)
       if(mesh_.he_length[h] == FT(0) || !(mesh_.he_opposite[h].y > FT(0)))
         pseudo_source_[std::size_t(mesh_.source(Index(h)))] = pseudo_source_[std::size_t(mesh_.target(Index(h)))] = 1;

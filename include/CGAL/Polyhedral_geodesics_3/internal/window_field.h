@@ -300,18 +300,8 @@ protected:
 
   void ensure_vertex_star() const
   {
-    if(!star_begin_.empty())
-      return;
-    const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
-    star_begin_.assign(nv + 1, 0);
-    for(std::size_t h = 0; h < nh; ++h)
-      ++star_begin_[std::size_t(mesh_.he_source[h]) + 1];
-    for(std::size_t v = 0; v < nv; ++v)
-      star_begin_[v + 1] += star_begin_[v];
-    star_.assign(nh, 0);
-    std::vector<Index> fill(star_begin_.begin(), star_begin_.end() - 1);
-    for(std::size_t h = 0; h < nh; ++h)
-      star_[std::size_t(fill[std::size_t(mesh_.he_source[h])]++)] = Index(h);
+    if(star_begin_.empty())
+      build_vertex_star(mesh_, star_begin_, star_);
   }
 
   // ------------------------------------------------------------------------------------------------
