@@ -1,16 +1,18 @@
 // Copyright (c) 2026 MDCS contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Approximate geodesic distances by interval merging (thesis, chapter 4.2): the exact window propagation
-// where a window about to propagate absorbs the neighbouring windows whose distance functions it reproduces
-// within a tolerance. The work is in internal/exact_window_propagation.h (absorb_similar_neighbours).
+// Approximate geodesic distances by interval merging (thesis, chapter 4.2): the exact propagation where
+// windows whose distance functions agree within a tolerance are joined. The work is in
+// internal/exact_window_propagation.h (absorb_similar_neighbours: the full field, limits, stop targets) and
+// internal/vertex_oriented_propagation.h (merge_similar_windows: distances_only runs); internal/
+// Exact_geodesic_engine.h picks one per run, as for the exact class.
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_MERGED_WINDOW_GEODESIC_DISTANCES_3_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_MERGED_WINDOW_GEODESIC_DISTANCES_3_H
 
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_distances_facade.h>
-#include <CGAL/Polyhedral_geodesics_3/internal/exact_window_propagation.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/Exact_geodesic_engine.h>
 
 #include <CGAL/boost/graph/properties.h>
 
@@ -25,17 +27,27 @@ namespace Polyhedral_geodesics_3 {
   interval merging: a trade-off between `Exact_geodesic_distances_3` (tolerance 0, the same result bit
   for bit) and fewer, wider windows.
 
-  Before a window propagates, each contiguous neighbour on its edge that has not propagated yet and looks
-  into the same face is absorbed when the window's distance function, extended over the neighbour's
-  interval, lies between the neighbour's own function and that function plus `merge_tolerance` (checked at
-  five points of the interval). Consequences, which the tests assert:
-  - every distance is at least the exact one (merges only raise values, and every value remains the
-    length bound of a real path), so the error is one-sided;
-  - the thesis's dependence DAG stays acyclic by construction: only windows without children are merged,
-    and a window's descendants cannot undercut it, so no window is ever replaced by its own descendants and
-    path tracing always descends to a source;
+  Two windows on one edge that look into the same face are joined when one of the two distance functions,
+  extended over the other's interval, lies between that interval's own function and that function plus
+  `merge_tolerance` (checked exactly: the extremes of the difference of two window functions are at the
+  interval ends or where both pseudo-sources are seen under the same angle). Of two candidates the function
+  that deviates less is kept. The two schedules of `Exact_geodesic_distances_3` merge with this rule:
+  - the window propagation (the full field, a distance limit, stop targets): before a window propagates, it
+    absorbs each contiguous neighbour that has not propagated yet;
+  - the vertex-oriented schedule (`distances_only` runs without limit or stop targets, the default there;
+    see `set_vertex_oriented_propagation()`): the windows that cross a face together, once trimmed, are joined
+    when their intervals touch or overlap (never across a gap). This is 2 to 3 times faster than the window
+    propagation at the same tolerance, with about the same error.
+
+  Consequences, which the tests assert for both schedules:
+  - every distance is at least the exact one: a kept function is never below the one it replaces, so every
+    value on an edge is at least the exact distance there, and propagation only adds straight segments;
+  - the thesis's dependence DAG stays acyclic by construction: only windows that have not propagated are
+    merged, and a window's descendants cannot undercut it, so no window is ever replaced by its own
+    descendants and path tracing always descends to a source;
   - the error of a vertex grows with the number of merges on the way from its source (each adds at most
-    `merge_tolerance`); the measured trade-off is in the package manual.
+    `merge_tolerance`); the measured trade-off is in the package manual. Tolerance 0 gives the exact result
+    bit for bit.
 
   The API is that of `Exact_geodesic_distances_3` (it models the same concept, see there), plus the
   tolerance.
@@ -46,10 +58,10 @@ template <class TriangleMesh, class FT_ = double,
           class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
 class Merged_window_geodesic_distances_3
   : public internal::Geodesic_distances_facade<TriangleMesh, FT_, VertexPointMap,
-                                               internal::Exact_window_propagation<FT_>>
+                                               internal::Exact_geodesic_engine<FT_>>
 {
   typedef internal::Geodesic_distances_facade<TriangleMesh, FT_, VertexPointMap,
-                                              internal::Exact_window_propagation<FT_>> Base;
+                                              internal::Exact_geodesic_engine<FT_>> Base;
 
 public:
   /// Precomputes the compact mesh; `merge_tolerance` is absolute (mesh units), >= 0.
@@ -80,6 +92,20 @@ public:
   }
 
   FT_ merge_tolerance() const { return tolerance_; }
+
+  /// As in `Exact_geodesic_distances_3`: whether `distances_only` runs without a limit or stop targets may
+  /// use the vertex-oriented schedule (default `true`); with `false` they use the window propagation.
+  void set_vertex_oriented_propagation(bool enable)
+  {
+    this->engine().set_vertex_oriented_allowed(enable);
+    this->invalidate();
+  }
+
+  /// See `set_vertex_oriented_propagation()`.
+  bool vertex_oriented_propagation() const { return this->engine_const().vertex_oriented_allowed(); }
+
+  /// Whether the last run used the vertex-oriented schedule.
+  bool used_vertex_oriented_propagation() const { return this->engine_const().uses_vertex_oriented_engine(); }
 
 private:
   FT_ tolerance_ = FT_(0);

@@ -51,6 +51,8 @@ public:
   void set_distance_limit(FT limit) { limit_ = limit; has_limit_ = true; }
   void clear_distance_limit() { has_limit_ = false; }
   void set_stop_targets(const std::vector<Index>& targets) { stop_targets_ = targets; }
+  // Interval merging (Merged_window_geodesic_distances_3): both engines merge with the same rule.
+  void set_merge_tolerance(const FT& tolerance) { merge_tolerance_ = tolerance; }
 
   // false: distances_only runs use the window-ordered engine too (for comparisons and its statistics).
   void set_vertex_oriented_allowed(bool allowed) { vertex_oriented_allowed_ = allowed; }
@@ -119,10 +121,12 @@ private:
     use_vertex_engine_ = vertex_oriented_allowed_ && !keep_windows_ && !has_limit_ && stop_targets_.empty();
     if(use_vertex_engine_) {
       vertex_engine().clear();
+      vertex_engine().set_merge_tolerance(merge_tolerance_);
       return;
     }
     Window_engine& w = window_engine();
     w.clear();
+    w.set_merge_tolerance(merge_tolerance_);
     w.set_keep_windows(keep_windows_);
     if(has_limit_) w.set_distance_limit(limit_);
     else w.clear_distance_limit();
@@ -148,7 +152,7 @@ private:
   std::unique_ptr<Vertex_engine> vertex_;
   bool keep_windows_ = true, has_limit_ = false, chosen_ = false, use_vertex_engine_ = false;
   bool vertex_oriented_allowed_ = true;
-  FT limit_ = FT(0);
+  FT limit_ = FT(0), merge_tolerance_ = FT(0);
   std::vector<Index> stop_targets_;
 };
 

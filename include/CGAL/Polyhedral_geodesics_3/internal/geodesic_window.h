@@ -69,6 +69,42 @@ inline FT window_min_distance(const FT& b0, const FT& b1, const FT& sx, const FT
   return sigma + abs(sy);
 }
 
+// Interval merging (thesis 4.2): the largest excess of the distance function w = (w_sx, w_sy, w_sigma) over
+// the function n = (n_sx, n_sy, n_sigma) on n's interval [n_b0, n_b1] if n <= w <= n + tolerance there (up to
+// the relative rounding allowance), else -1. The extremes of w - n are at the interval's ends or where both
+// pseudo-sources are seen under the same angle: |x - a_w| |h_n| = |x - a_n| |h_w|, two linear equations. So the
+// bounds are checked exactly (up to rounding), not sampled.
+template <class FT>
+FT window_merge_deviation(const FT& w_sx, const FT& w_sy, const FT& w_sigma, const FT& n_sx, const FT& n_sy,
+                          const FT& n_sigma, const FT& n_b0, const FT& n_b1, const FT& tolerance,
+                          const FT& relative_tolerance)
+{
+  using std::abs;
+  FT xs[4];
+  int count = 0;
+  xs[count++] = n_b0;
+  xs[count++] = n_b1;
+  const FT hw = abs(w_sy), hn = abs(n_sy);
+  for(int sign = -1; sign <= 1; sign += 2) {
+    const FT den = hn + FT(sign) * hw;
+    if(den != FT(0)) {
+      const FT x = (w_sx * hn + FT(sign) * n_sx * hw) / den;
+      if(n_b0 < x && x < n_b1)
+        xs[count++] = x;
+    }
+  }
+  FT worst = FT(0);
+  for(int k = 0; k < count; ++k) {
+    const FT dn = window_distance_at(xs[k], n_sx, n_sy, n_sigma);
+    const FT diff = window_distance_at(xs[k], w_sx, w_sy, w_sigma) - dn;
+    if(diff + relative_tolerance * dn < FT(0) || diff > tolerance)
+      return FT(-1);
+    if(diff > worst)
+      worst = diff;
+  }
+  return worst;
+}
+
 template <class FT>
 inline FT distance_2(const FT& ax, const FT& ay, const FT& bx, const FT& by)
 {

@@ -70,9 +70,19 @@ public:
     pseudo_source_.assign(nv, 0);
     for(std::size_t v = 0; v < nv; ++v)
       pseudo_source_[v] = is_saddle_or_boundary_vertex(mesh_, v);
+    // Of those, the ones where no shortest path bends (a flat interior vertex, a boundary vertex with at most a
+    // straight angle) only emit "lobes": windows that never beat the others by more than rounding. Merging (see
+    // merge_similar_windows) never lets a lobe replace another window, which keeps flat meshes exact.
+    lobe_vertex_.assign(nv, 0);
+    const double pi = 3.14159265358979323846;
+    for(std::size_t v = 0; v < nv; ++v)
+      lobe_vertex_[v] = pseudo_source_[v] &&
+                        !(to_double_value(mesh_.vertex_angle_sum[v]) > (mesh_.vertex_on_boundary[v] ? 1 : 2) * pi + 1e-9);
     for(std::size_t h = 0; h < nh; ++h)
-      if(mesh_.he_length[h] == FT(0) || !(mesh_.he_opposite[h].y > FT(0)))
+      if(mesh_.he_length[h] == FT(0) || !(mesh_.he_opposite[h].y > FT(0))) {
         pseudo_source_[std::size_t(mesh_.source(Index(h)))] = pseudo_source_[std::size_t(mesh_.target(Index(h)))] = 1;
+        lobe_vertex_[std::size_t(mesh_.source(Index(h)))] = lobe_vertex_[std::size_t(mesh_.target(Index(h)))] = 0;
+      }
     clear();
   }
 
@@ -102,6 +112,9 @@ public:
     if(keep)
       throw std::logic_error("CGAL::Polyhedral_geodesics_3: the vertex-oriented engine keeps no field");
   }
+
+  // Approximation by interval merging (absolute tolerance; 0: exact). See merge_similar_windows().
+  void set_merge_tolerance(const FT& tolerance) { merge_tolerance_ = tolerance; }
 
   void add_vertex_source(Index v, Index id)
   {
@@ -203,6 +216,7 @@ private:
   {
     FT b0, b1, sx, sy, sigma;
     Index source;
+    bool lobe; // emitted by a vertex where no shortest path bends (see lobe_vertex_), or a descendant of one
   };
 
   struct Heap_entry
@@ -251,7 +265,7 @@ private:
         continue;
       const FT L = mesh_.he_length[std::size_t(g)];
       const Point_2_ft<FT>& p = mesh_.he_opposite[std::size_t(g)]; // v in g's frame
-      add_window(t, FT(0), L, L - p.x, -p.y, d, id);
+      add_window(t, FT(0), L, L - p.x, -p.y, d, id, lobe_vertex_[std::size_t(v)] && !is_source_[std::size_t(v)]);
     }
   }
 
@@ -269,14 +283,15 @@ private:
         continue; // on this edge: its other side is a face source of its own (see add_face_source)
       const Index t = mesh_.he_twin[std::size_t(g)];
       if(t >= 0)
-        add_window(t, FT(0), L, L - px, -py, FT(0), id);
+        add_window(t, FT(0), L, L - px, -py, FT(0), id, false);
     }
   }
 
   // ------------------------------------------------------------------------------------------------
   // Window lists
 
-  void add_window(Index g, const FT& b0, const FT& b1, const FT& sx, const FT& sy, const FT& sigma, Index source)
+  void add_window(Index g, const FT& b0, const FT& b1, const FT& sx, const FT& sy, const FT& sigma, Index source,
+                  bool lobe)
   {
     Index wi;
     if(!free_.empty()) {
@@ -294,6 +309,7 @@ private:
     w.sy = sy;
     w.sigma = sigma;
     w.source = source;
+    w.lobe = lobe;
     next_[std::size_t(wi)] = head_[std::size_t(g)];
     head_[std::size_t(g)] = wi;
     ++stats_.windows_created;
@@ -501,6 +517,8 @@ private:
         if(wi >= 0)
           batch_[kept++] = wi;
       batch_.resize(kept);
+      if(merge_tolerance_ > FT(0))
+        merge_similar_windows();
     }
 
     // 3. The value at C from each window (straight if the segment S-C crosses the window, else through the
@@ -568,6 +586,50 @@ private:
     }
   }
 
+  // Interval merging (thesis 4.2), for Merged_window_geodesic_distances_3: a window of the batch (sorted by
+  // start) absorbs the next one when their intervals touch or overlap and one of the two distance functions,
+  // extended over the other's interval, lies between that function and that function plus the tolerance; of
+  // two candidates the one that deviates less is kept. A kept function is never below the one it replaces, and
+  // every window's values stay at or above the exact distance (the children add straight segments), so every
+  // distance stays at or above the exact one. Gaps are never bridged: no bound would hold there.
+  void merge_similar_windows()
+  {
+    std::size_t kept = 0;
+    for(std::size_t i = 0; i < batch_.size(); ++i) {
+      const Index wi = batch_[i];
+      if(kept > 0) {
+        Window& a = pool_[std::size_t(batch_[kept - 1])];
+        const Window& b = pool_[std::size_t(wi)];
+        if(!(b.b0 > a.b1)) {
+          // a lobe never replaces another window's function
+          const FT a_over_b = a.lobe && !b.lobe ? FT(-1)
+                              : window_merge_deviation(a.sx, a.sy, a.sigma, b.sx, b.sy, b.sigma, b.b0, b.b1,
+                                                       merge_tolerance_, relative_tolerance_);
+          const FT b_over_a = b.lobe && !a.lobe ? FT(-1)
+                              : window_merge_deviation(b.sx, b.sy, b.sigma, a.sx, a.sy, a.sigma, a.b0, a.b1,
+                                                       merge_tolerance_, relative_tolerance_);
+          if(a_over_b >= FT(0) || b_over_a >= FT(0)) {
+            const bool keep_a = !(b_over_a >= FT(0)) || (a_over_b >= FT(0) && !(b_over_a < a_over_b));
+            if(!keep_a) {
+              a.sx = b.sx;
+              a.sy = b.sy;
+              a.sigma = b.sigma;
+              a.source = b.source;
+              a.lobe = b.lobe;
+            }
+            if(b.b0 < a.b0) a.b0 = b.b0;
+            if(b.b1 > a.b1) a.b1 = b.b1;
+            free_window(wi);
+            ++stats_.windows_merged;
+            continue;
+          }
+        }
+      }
+      batch_[kept++] = wi;
+    }
+    batch_.resize(kept);
+  }
+
   // The rays from the pseudo-source of w through [x0, x1] (on g's edge) cross into the target halfedge t,
   // whose frame has its origin at (ox, oy) of g's frame and its x axis along the unit vector (ex, ey).
   void emit_child(Index t, const FT& len, const Window& w, const FT& x0, const FT& x1, const FT& ex, const FT& ey,
@@ -597,7 +659,7 @@ private:
     if(h1 > len) h1 = len;
     if(!(h1 - h0 > relative_tolerance_ * len))
       return;
-    add_window(t, h0, h1, sx, sy, w.sigma, w.source);
+    add_window(t, h0, h1, sx, sy, w.sigma, w.source, w.lobe);
   }
 
   void emit_whole_edge(Index t, const FT& len, const Window& w, const FT& ex, const FT& ey, const FT& ox, const FT& oy)
@@ -605,7 +667,7 @@ private:
     const FT dx = w.sx - ox, dy = w.sy - oy;
     const FT sx = ex * dx + ey * dy, sy = ex * dy - ey * dx;
     if(sy < FT(0))
-      add_window(t, FT(0), len, sx, sy, w.sigma, w.source);
+      add_window(t, FT(0), len, sx, sy, w.sigma, w.source, w.lobe);
   }
 
   void note_memory()
@@ -618,7 +680,9 @@ private:
 
   const Mesh& mesh_;
   FT unreached_, relative_tolerance_;
+  FT merge_tolerance_ = FT(0);
   std::vector<Index> star_begin_, star_;
+  std::vector<char> lobe_vertex_;
   std::vector<char> pseudo_source_, is_source_, settled_once_;
   std::vector<FT> dist_;
   std::vector<Index> vertex_source_;

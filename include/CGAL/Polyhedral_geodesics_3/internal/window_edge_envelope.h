@@ -424,35 +424,10 @@ protected:
   }
 
   // The largest excess of D_w over D_n on n's interval if D_n <= D_w <= D_n + tolerance there, else -1.
-  // The extremes of f = D_w - D_n are at the interval's ends or where f' = 0, i.e. where both pseudo-sources
-  // are seen under the same angle: |x - a_w| |h_n| = |x - a_n| |h_w|, two linear equations. So the bounds
-  // are checked exactly (up to rounding), not sampled.
   FT merge_deviation(const Window& w, const Window& n) const
   {
-    using std::abs;
-    FT xs[4];
-    int count = 0;
-    xs[count++] = n.b0;
-    xs[count++] = n.b1;
-    const FT hw = abs(w.sy), hn = abs(n.sy);
-    for(int sign = -1; sign <= 1; sign += 2) {
-      const FT den = hn + FT(sign) * hw;
-      if(den != FT(0)) {
-        const FT x = (w.sx * hn + FT(sign) * n.sx * hw) / den;
-        if(n.b0 < x && x < n.b1)
-          xs[count++] = x;
-      }
-    }
-    FT worst = FT(0);
-    for(int k = 0; k < count; ++k) {
-      const FT dn = window_distance_at(xs[k], n.sx, n.sy, n.sigma);
-      const FT diff = window_distance_at(xs[k], w.sx, w.sy, w.sigma) - dn;
-      if(diff + relative_tolerance_ * dn < FT(0) || diff > merge_tolerance_)
-        return FT(-1);
-      if(diff > worst)
-        worst = diff;
-    }
-    return worst;
+    return window_merge_deviation(w.sx, w.sy, w.sigma, n.sx, n.sy, n.sigma, n.b0, n.b1, merge_tolerance_,
+                                  relative_tolerance_);
   }
 
   static void append_interval(std::vector<Interval>& list, const FT& lo, const FT& hi)
