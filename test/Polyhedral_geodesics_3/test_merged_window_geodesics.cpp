@@ -15,6 +15,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -148,6 +149,48 @@ TEST_CASE("merged windows: one-sided error, monotone in the tolerance", "[geodes
       CHECK(last_windows < reference.statistics().windows_created * 9 / 10);
     else
       CHECK(last_windows < reference.statistics().windows_propagated / 2);
+    }
+  }
+}
+
+TEST_CASE("merged windows: several sources and a face source, both schedules", "[geodesics][merged]")
+{
+  for(const auto& tm : curved_meshes()) {
+    const double mel = mean_edge_length(tm.mesh);
+    const auto sources = MDCS_test::spread_vertices(tm.mesh, 3, 23);
+    const auto f = *faces(tm.mesh).begin();
+    const Merged::Face_location loc(f, std::array<double, 3>{{0.2, 0.5, 0.3}});
+    Exact exact(tm.mesh, PG::Geodesic_memory_mode::distances_only);
+    for(auto s : sources)
+      exact.add_source(s);
+    exact.add_source(loc);
+    const std::vector<double> d = all_distances(exact, tm.mesh);
+    for(bool vertex_oriented : {true, false}) {
+      INFO(tm.name << ", vertex-oriented " << vertex_oriented);
+      Merged merged(tm.mesh, 0.1 * mel, PG::Geodesic_memory_mode::distances_only);
+      merged.set_vertex_oriented_propagation(vertex_oriented);
+      for(auto s : sources)
+        merged.add_source(s);
+      merged.add_source(loc);
+      const std::vector<double> a = all_distances(merged, tm.mesh);
+      double error = 0, below = 0;
+      std::size_t n = 0, bad_label = 0;
+      std::size_t i = 0;
+      for(vertex_descriptor v : vertices(tm.mesh)) {
+        REQUIRE(std::isfinite(a[i]) == std::isfinite(d[i]));
+        if(std::isfinite(a[i]) && merged.nearest_source(v).second > sources.size())
+          ++bad_label; // ids 0..3: the three vertex sources and the face source
+        if(d[i] > 0 && std::isfinite(d[i])) {
+          error += (a[i] - d[i]) / d[i];
+          below = std::min(below, (a[i] - d[i]) / d[i]);
+          ++n;
+        }
+        ++i;
+      }
+      CHECK(below >= -1e-12);
+      CHECK(error / double(n) < 0.05 * 0.1);
+      CHECK(bad_label == 0);
+      CHECK(merged.used_vertex_oriented_propagation() == vertex_oriented);
     }
   }
 }
