@@ -43,6 +43,7 @@ struct Geodesic_statistics
   std::size_t peak_memory_bytes = 0;   ///< bytes of window storage and queue at their peak (an estimate)
   std::size_t vertex_updates = 0;      ///< vertex distances lowered (flat-exact, fast marching, Dijkstra)
   std::size_t updates_rejected_by_dag = 0; ///< lowerings refused because they would close a dependence cycle
+  std::size_t stranded_expansions = 0; ///< rounds of the safety net that expands the reached neighbours of a vertex left unreached (merging only, in practice)
   bool stopped_early = false;          ///< the propagation stopped at the distance limit or at the stop targets
 };
 
