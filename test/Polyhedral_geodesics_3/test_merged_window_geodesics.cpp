@@ -227,6 +227,34 @@ TEST_CASE("merged windows: coarse tolerances reach every vertex (bunny00)", "[ge
     }
 }
 
+// After the trimming of a batch, the windows must be sorted again before neighbours are merged: an earlier
+// version compared a window with the previous one in the old order and joined two windows across a gap, which
+// put 2 vertices of bull.off 1.8e-4 (relative) below the exact distance at 0.03 edge lengths.
+TEST_CASE("merged windows: never below exact on bull.off (no merge across a gap)", "[geodesics][merged][robustness]")
+{
+  Mesh m;
+  if(!MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh("bull.off"), m)) {
+    WARN("CGAL demo mesh bull.off not found; test skipped");
+    return;
+  }
+  const double mel = mean_edge_length(m);
+  const vertex_descriptor s(static_cast<Mesh::size_type>(num_vertices(m) / 3));
+  Exact exact(m, PG::Geodesic_memory_mode::distances_only);
+  exact.add_source(s);
+  const std::vector<double> d = all_distances(exact, m);
+  for(double relative : {0.01, 0.03, 0.05}) {
+    INFO("tolerance " << relative << " x mean edge length");
+    Merged merged(m, relative * mel, PG::Geodesic_memory_mode::distances_only);
+    merged.add_source(s);
+    const std::vector<double> a = all_distances(merged, m);
+    std::size_t below = 0;
+    for(std::size_t i = 0; i < d.size(); ++i)
+      below += a[i] < d[i] * (1 - 1e-12) ? 1 : 0;
+    CHECK(below == 0);
+    CHECK(merged.used_vertex_oriented_propagation());
+  }
+}
+
 TEST_CASE("merged windows: flat meshes stay exact", "[geodesics][merged][flat]")
 {
   const Mesh m = make_mesh(MDCS_test::jittered_planar_grid<Point_3>(20, 14, 2.0, 1.4, 0.3, 7));

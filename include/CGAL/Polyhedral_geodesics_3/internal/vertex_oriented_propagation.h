@@ -624,13 +624,16 @@ private:
   // distance stays at or above the exact one. Gaps are never bridged: no bound would hold there.
   void merge_similar_windows()
   {
+    // the trimming moved starts: sort again, so that neighbours along the edge are neighbours in the batch
+    std::sort(batch_.begin(), batch_.end(),
+              [&](Index a, Index b) { return pool_[std::size_t(a)].b0 < pool_[std::size_t(b)].b0; });
     std::size_t kept = 0;
     for(std::size_t i = 0; i < batch_.size(); ++i) {
       const Index wi = batch_[i];
       if(kept > 0) {
         Window& a = pool_[std::size_t(batch_[kept - 1])];
         const Window& b = pool_[std::size_t(wi)];
-        if(!(b.b0 > a.b1)) {
+        if(!(b.b0 > a.b1) && !(a.b0 > b.b1)) { // they touch or overlap (a gap is never bridged)
           // a lobe never replaces another window's function
           const FT a_over_b = a.lobe && !b.lobe ? FT(-1)
                               : window_merge_deviation(a.sx, a.sy, a.sigma, b.sx, b.sy, b.sigma, b.b0, b.b1,
