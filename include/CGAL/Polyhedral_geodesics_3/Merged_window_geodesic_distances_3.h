@@ -36,8 +36,8 @@ namespace Polyhedral_geodesics_3 {
     absorbs each contiguous neighbour that has not propagated yet;
   - the vertex-oriented schedule (`distances_only` runs without limit or stop targets, the default there;
     see `set_vertex_oriented_propagation()`): the windows that cross a face together, once trimmed, are joined
-    when their intervals touch or overlap (never across a gap). This is 2 to 3 times faster than the window
-    propagation at the same tolerance, with about the same error.
+    when their intervals touch or overlap (never across a gap). Measured on 11 meshes, this is 1.3 to 3.9 times
+    faster (median 1.9) than the window propagation at the same tolerance, with about the same error.
 
   Consequences, which the tests assert for both schedules:
   - every distance is at least the exact one: a kept function is never below the one it replaces, so every
