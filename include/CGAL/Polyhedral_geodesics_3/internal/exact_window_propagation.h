@@ -194,59 +194,57 @@ public:
       throw MDCS::Operation_cancelled(stage);
     this->reset_field(keep_windows_);
     std::size_t pops = 0;
-    for(;;) {
-    while(!heap_.empty()) {
-      const Heap_entry top = heap_.pop();
-      if(top.window < 0) {
-        const Index v = -top.window - 1;
-        if(top.stamp != vertex_stamp_[std::size_t(v)] || expanded_stamp_[std::size_t(v)] == top.stamp)
+    do {
+      while(!heap_.empty()) {
+        const Heap_entry top = heap_.pop();
+        if(top.window < 0) {
+          const Index v = -top.window - 1;
+          if(top.stamp != vertex_stamp_[std::size_t(v)] || expanded_stamp_[std::size_t(v)] == top.stamp)
+            continue;
+          front_ = top.key;
+          if(has_limit_ && top.key > limit_) {
+            stopped_early_ = true;
+            break;
+          }
+          expand_vertex(v);
+          continue;
+        }
+        Window& w = windows_[std::size_t(top.window)];
+        if(!w.alive || w.stamp != top.stamp || w.processed)
           continue;
         front_ = top.key;
         if(has_limit_ && top.key > limit_) {
           stopped_early_ = true;
           break;
         }
-        expand_vertex(v);
-        continue;
+        if(!stop_targets_.empty() && (pops & 15) == 0 && stop_targets_final(top.key)) {
+          stopped_early_ = true;
+          break;
+        }
+        if(merge_tolerance_ > FT(0))
+          absorb_similar_neighbours(top.window);
+        windows_[std::size_t(top.window)].processed = true;
+        const Index top_edge = windows_[std::size_t(top.window)].edge;
+        --unpropagated_[std::size_t(top_edge)];
+        propagate(top.window);
+        ++stats_.windows_propagated;
+        // Both modes release the edges behind the front; the full-field mode first copies them into the
+        // stored field.
+        if(unpropagated_[std::size_t(top_edge)] == 0)
+          queue_edge_release(top_edge);
+        release_passed_edges(top.key);
+        if(++since_release_ >= release_interval_) {
+          since_release_ = 0;
+          release_final_edges(top.key);
+          // a scan costs O(edges + windows): space the scans so that it stays O(1) per propagated window
+          release_interval_ = mesh_.number_of_edges / 2 + live_windows_ + 1024;
+        }
+        if((++pops & 0xFFFF) == 0) {
+          if(!progress(stage, fraction_final(top.key)))
+            throw MDCS::Operation_cancelled(stage);
+        }
       }
-      Window& w = windows_[std::size_t(top.window)];
-      if(!w.alive || w.stamp != top.stamp || w.processed)
-        continue;
-      front_ = top.key;
-      if(has_limit_ && top.key > limit_) {
-        stopped_early_ = true;
-        break;
-      }
-      if(!stop_targets_.empty() && (pops & 15) == 0 && stop_targets_final(top.key)) {
-        stopped_early_ = true;
-        break;
-      }
-      if(merge_tolerance_ > FT(0))
-        absorb_similar_neighbours(top.window);
-      windows_[std::size_t(top.window)].processed = true;
-      const Index top_edge = windows_[std::size_t(top.window)].edge;
-      --unpropagated_[std::size_t(top_edge)];
-      propagate(top.window);
-      ++stats_.windows_propagated;
-      // Both modes release the edges behind the front; the full-field mode first copies them into the
-      // stored field.
-      if(unpropagated_[std::size_t(top_edge)] == 0)
-        queue_edge_release(top_edge);
-      release_passed_edges(top.key);
-      if(++since_release_ >= release_interval_) {
-        since_release_ = 0;
-        release_final_edges(top.key);
-        // a scan costs O(edges + windows): space the scans so that it stays O(1) per propagated window
-        release_interval_ = mesh_.number_of_edges / 2 + live_windows_ + 1024;
-      }
-      if((++pops & 0xFFFF) == 0) {
-        if(!progress(stage, fraction_final(top.key)))
-          throw MDCS::Operation_cancelled(stage);
-      }
-    }
-    if(stopped_early_ || !expand_stranded_neighbours())
-      break;
-    }
+    } while(!stopped_early_ && expand_stranded_neighbours());
     if(stopped_early_) {
       // Only distances below the front are final; report the others as unreachable, never as a wrong value.
       const FT bound = has_limit_ && front_ > limit_ ? limit_ : front_;

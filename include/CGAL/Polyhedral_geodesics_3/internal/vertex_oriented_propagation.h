@@ -161,37 +161,35 @@ public:
     if(!progress(stage, 0.0))
       throw MDCS::Operation_cancelled(stage);
     std::size_t pops = 0, settled = 0;
-    for(;;) {
-    while(!heap_.empty()) {
-      const Heap_entry top = heap_.pop();
-      const std::size_t v = std::size_t(top.vertex);
-      if(top.stamp != stamp_[v] || state_[v] == INSIDE)
-        continue;
-      if(!settled_once_[v]) {
-        settled_once_[v] = 1;
-        ++settled;
+    do {
+      while(!heap_.empty()) {
+        const Heap_entry top = heap_.pop();
+        const std::size_t v = std::size_t(top.vertex);
+        if(top.stamp != stamp_[v] || state_[v] == INSIDE)
+          continue;
+        if(!settled_once_[v]) {
+          settled_once_[v] = 1;
+          ++settled;
+        }
+        state_[v] = INSIDE;
+        if(pseudo_source_[v] || is_source_[v])
+          expand_vertex(top.vertex);
+        for(Index k = star_begin_[v]; k < star_begin_[v + 1]; ++k) {
+          const Index h = star_[std::size_t(k)];
+          make_ready(h);
+          make_ready(Mesh::prev(h));
+        }
+        while(fifo_head_ < fifo_.size())
+          process_list(fifo_[fifo_head_++]);
+        fifo_.clear();
+        fifo_head_ = 0;
+        if((++pops & 0x3FFF) == 0) {
+          const double fraction = dist_.empty() ? 1.0 : double(settled) / double(dist_.size());
+          if(!progress(stage, fraction < 1.0 ? fraction : 1.0))
+            throw MDCS::Operation_cancelled(stage);
+        }
       }
-      state_[v] = INSIDE;
-      if(pseudo_source_[v] || is_source_[v])
-        expand_vertex(top.vertex);
-      for(Index k = star_begin_[v]; k < star_begin_[v + 1]; ++k) {
-        const Index h = star_[std::size_t(k)];
-        make_ready(h);
-        make_ready(Mesh::prev(h));
-      }
-      while(fifo_head_ < fifo_.size())
-        process_list(fifo_[fifo_head_++]);
-      fifo_.clear();
-      fifo_head_ = 0;
-      if((++pops & 0x3FFF) == 0) {
-        const double fraction = dist_.empty() ? 1.0 : double(settled) / double(dist_.size());
-        if(!progress(stage, fraction < 1.0 ? fraction : 1.0))
-          throw MDCS::Operation_cancelled(stage);
-      }
-    }
-    if(!expand_stranded_neighbours())
-      break;
-    }
+    } while(expand_stranded_neighbours());
     stats_.stored_windows = 0;
     note_memory();
     std::vector<Window>().swap(pool_);
