@@ -69,6 +69,30 @@ std::vector<Test_mesh> curved_meshes()
   return r;
 }
 
+// A CGAL demo mesh, the vertex num_vertices / 3 as the source (the configuration in which the regressions below
+// were found) and the exact distances from it; false (with a warning) when the mesh is not installed.
+struct Demo_case
+{
+  Mesh mesh;
+  vertex_descriptor source;
+  double mean_edge = 0;
+  std::vector<double> exact;
+};
+
+bool load_demo_case(const std::string& name, Demo_case& c)
+{
+  if(!MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh(name), c.mesh)) {
+    WARN("CGAL demo mesh " << name << " not found; test skipped");
+    return false;
+  }
+  c.mean_edge = mean_edge_length(c.mesh);
+  c.source = vertex_descriptor(static_cast<Mesh::size_type>(num_vertices(c.mesh) / 3));
+  Exact exact(c.mesh, PG::Geodesic_memory_mode::distances_only);
+  exact.add_source(c.source);
+  c.exact = all_distances(exact, c.mesh);
+  return true;
+}
+
 } // namespace
 
 TEST_CASE("merged windows: tolerance 0 is the exact algorithm, bit for bit", "[geodesics][merged]")
@@ -200,16 +224,13 @@ TEST_CASE("merged windows: several sources and a face source, both schedules", "
 // window propagation. The engines now expand the reached neighbours of such a vertex.
 TEST_CASE("merged windows: coarse tolerances reach every vertex (bunny00)", "[geodesics][merged][robustness]")
 {
-  Mesh m;
-  if(!MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh("bunny00.off"), m)) {
-    WARN("CGAL demo mesh bunny00.off not found; test skipped");
+  Demo_case c;
+  if(!load_demo_case("bunny00.off", c))
     return;
-  }
-  const double mel = mean_edge_length(m);
-  const vertex_descriptor s(static_cast<Mesh::size_type>(num_vertices(m) / 3));
-  Exact exact(m, PG::Geodesic_memory_mode::distances_only);
-  exact.add_source(s);
-  const std::vector<double> d = all_distances(exact, m);
+  const Mesh& m = c.mesh;
+  const std::vector<double>& d = c.exact;
+  const double mel = c.mean_edge;
+  const vertex_descriptor s = c.source;
   for(bool vertex_oriented : {true, false})
     for(double relative : {1.0, 3.0}) {
       INFO("vertex-oriented " << vertex_oriented << ", tolerance " << relative << " x mean edge length");
@@ -232,16 +253,13 @@ TEST_CASE("merged windows: coarse tolerances reach every vertex (bunny00)", "[ge
 // put 2 vertices of bull.off 1.8e-4 (relative) below the exact distance at 0.03 edge lengths.
 TEST_CASE("merged windows: never below exact on bull.off (no merge across a gap)", "[geodesics][merged][robustness]")
 {
-  Mesh m;
-  if(!MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh("bull.off"), m)) {
-    WARN("CGAL demo mesh bull.off not found; test skipped");
+  Demo_case c;
+  if(!load_demo_case("bull.off", c))
     return;
-  }
-  const double mel = mean_edge_length(m);
-  const vertex_descriptor s(static_cast<Mesh::size_type>(num_vertices(m) / 3));
-  Exact exact(m, PG::Geodesic_memory_mode::distances_only);
-  exact.add_source(s);
-  const std::vector<double> d = all_distances(exact, m);
+  const Mesh& m = c.mesh;
+  const std::vector<double>& d = c.exact;
+  const double mel = c.mean_edge;
+  const vertex_descriptor s = c.source;
   for(double relative : {0.01, 0.03, 0.05}) {
     INFO("tolerance " << relative << " x mean edge length");
     Merged merged(m, relative * mel, PG::Geodesic_memory_mode::distances_only);

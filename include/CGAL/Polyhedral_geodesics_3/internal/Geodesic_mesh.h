@@ -104,6 +104,30 @@ void build_vertex_star(const Geodesic_mesh<FT>& mesh, std::vector<typename Geode
     star[std::size_t(fill[std::size_t(mesh.he_source[h])]++)] = Index(h);
 }
 
+// The safety net of the window engines after a run with interval merging: calls expand(w) for every reached
+// vertex w (dist[w] < unreached) next to an unreached one. Returns whether it called it at all.
+template <class FT, class IndexVector, class DistVector, class Expand>
+bool expand_reached_neighbours_of_unreached(const Geodesic_mesh<FT>& mesh, const IndexVector& star_begin,
+                                            const IndexVector& star, const DistVector& dist, const FT& unreached,
+                                            Expand expand)
+{
+  typedef typename Geodesic_mesh<FT>::Index Index;
+  bool any = false;
+  for(std::size_t u = 0; u < dist.size(); ++u) {
+    if(dist[u] < unreached)
+      continue;
+    for(Index k = star_begin[u]; k < star_begin[u + 1]; ++k) {
+      const Index h = star[std::size_t(k)]; // source(h) == u
+      for(Index w : {mesh.target(h), mesh.source(Geodesic_mesh<FT>::prev(h))})
+        if(dist[std::size_t(w)] < unreached) {
+          expand(w);
+          any = true;
+        }
+    }
+  }
+  return any;
+}
+
 // Shortest paths can bend only at saddle vertices (angle sum above 2 pi) and boundary vertices. Flat vertices
 // are included: rounding decides their side.
 template <class FT>

@@ -258,19 +258,8 @@ private:
   // goes on. Returns false if there was nothing to do (an exact run on a connected mesh: one scan).
   bool expand_stranded_neighbours()
   {
-    bool any = false;
-    for(std::size_t u = 0; u < dist_.size(); ++u) {
-      if(dist_[u] < unreached_)
-        continue;
-      for(Index k = star_begin_[u]; k < star_begin_[u + 1]; ++k) {
-        const Index h = star_[std::size_t(k)]; // source(h) == u
-        for(Index w : {mesh_.target(h), mesh_.source(Mesh::prev(h))})
-          if(dist_[std::size_t(w)] < unreached_) {
-            expand_vertex(w);
-            any = true;
-          }
-      }
-    }
+    const bool any = expand_reached_neighbours_of_unreached(mesh_, star_begin_, star_, dist_, unreached_,
+                                                            [this](Index w) { expand_vertex(w); });
     if(any)
       ++stats_.stranded_expansions;
     return any;
