@@ -19,9 +19,11 @@
 
 #include <boost/multiprecision/number.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -166,7 +168,57 @@ void compute_halfedge_frame(Geodesic_mesh<FT>& mesh, typename Geodesic_mesh<FT>:
   mesh.he_opposite[h] = Point_2_ft<FT>{dot / length, sqrt(cx * cx + cy * cy + cz * cz) / length};
 }
 
-// Builds the compact mesh. Throws std::invalid_argument for faces that are not triangles.
+// The sum of the corner angles around each vertex without an atan2 per corner (which took a tenth of the
+// construction): the corners of a vertex, as vectors (x, y) with y >= 0 (angles in [0, pi]), are multiplied
+// as complex numbers, which adds their angles modulo 2 pi; one atan2 per vertex gives that remainder and the
+// whole turns are counted on the way. With steps of at most pi, the argument of the product passes 2 pi
+// exactly when it goes from the lower half-plane (im < 0) to the closed upper one, or, for a step of exactly
+// pi, from the left of the upper half-plane to the right of it (no smaller step crosses the imaginary axis
+// backwards). The same sign convention as the final atan2 (im >= 0 is the argument in [0, pi]) keeps the two
+// consistent; rounding only moves the product by ulps. The result agrees with the sum of the atan2 to a few
+// ulps per corner (measured: at most 3.6e-15 on CGAL's demo meshes and ../shared/data).
+class Vertex_angle_accumulator
+{
+public:
+  explicit Vertex_angle_accumulator(std::size_t n) : re_(n, 1.0), im_(n, 0.0), turns_(n, 0) {}
+
+  void add(std::size_t v, double x, double y)
+  {
+    if(x == 0 && y == 0)
+      return; // a zero-length edge: no corner
+    const double r = re_[v], i = im_[v];
+    double nr = r * x - i * y, ni = r * y + i * x;
+    // The product is a direction: its length (the product of edge lengths) only needs to stay far from under-
+    // and overflow. Rescaling by a power of two is exact and only needed now and then.
+    const double m = (std::max)(std::abs(nr), std::abs(ni));
+    if(!(m > 0x1p-400 && m < 0x1p400)) {
+      if(!(m > 0) || !(m < std::numeric_limits<double>::infinity()))
+        return; // coordinates near the limits of double: the corner is not counted
+      int e;
+      std::frexp(m, &e);
+      nr = std::ldexp(nr, -e);
+      ni = std::ldexp(ni, -e);
+    }
+    if(ni >= 0 && (i < 0 || (r < 0 && nr > 0)))
+      ++turns_[v];
+    re_[v] = nr;
+    im_[v] = ni;
+  }
+
+  double sum(std::size_t v) const
+  {
+    const double two_pi = 2 * 3.14159265358979323846;
+    double a = std::atan2(im_[v], re_[v]);
+    if(a < 0)
+      a += two_pi;
+    return two_pi * turns_[v] + a;
+  }
+
+private:
+  std::vector<double> re_, im_;
+  std::vector<int> turns_;
+};
+
 template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim,
                          Geodesic_mesh<FT>& mesh,
@@ -256,7 +308,7 @@ void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndex
 
   mesh.vertex_halfedge.assign(nv, -1);
   mesh.vertex_on_boundary.assign(nv, 0);
-  mesh.vertex_angle_sum.assign(nv, FT(0));
+  Vertex_angle_accumulator angles(nv);
   for(Index h = 0; h < Index(3 * nf); ++h) {
     const Index v = mesh.source(h);
     if(mesh.vertex_halfedge[v] < 0)
@@ -265,12 +317,12 @@ void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndex
       mesh.vertex_on_boundary[v] = 1;
       mesh.vertex_on_boundary[mesh.target(h)] = 1;
     }
-    // corner angle at the source of h, between h and prev(h) reversed
-    const double ax = to_double_value(mesh.he_opposite[h].x);
-    const double ay = to_double_value(mesh.he_opposite[h].y);
-    if(ax != 0 || ay != 0)
-      mesh.vertex_angle_sum[v] += FT(std::atan2(ay, ax));
+    // the corner at the source of h, between h and prev(h) reversed: the opposite corner in h's frame
+    angles.add(std::size_t(v), to_double_value(mesh.he_opposite[h].x), to_double_value(mesh.he_opposite[h].y));
   }
+  mesh.vertex_angle_sum.resize(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    mesh.vertex_angle_sum[v] = FT(angles.sum(v));
 }
 
 } // namespace internal

@@ -186,6 +186,7 @@ private:
   using Base::child_prev_;
   using Base::clock_;
   using Base::counters_;
+  using Base::epsilon_;
   using Base::face_source_index_;
   using Base::face_sources_;
   using Base::first_reached_;
@@ -197,7 +198,9 @@ private:
   using Base::he_target;
   using Base::heap_;
   using Base::heap_position_;
-  using Base::improvement_;
+  using Base::lowering_tolerance;
+  using Base::lowerings_;
+  using Base::lowers;
   using Base::last_lowered_;
   using Base::length_2;
   using Base::limit_;
@@ -261,9 +264,25 @@ private:
   {
     if(!reached(ie.a) || !reached(ie.b))
       return;
+    Index i = heap_position_[std::size_t(ie.edge)];
+    // The candidate key: most edges around a lowered vertex cannot lower either opposite vertex (the upwind
+    // faces), and a bound without the pseudo-source tells so (see can_lower()). Then the edge is not queued,
+    // exactly as if its candidates had been computed, at the cost of a few comparisons.
+    bool may_lower[2] = {false, false};
+    if(queue_key_ == Queue_key::candidate) {
+      const FT& c1 = vs_[std::size_t(ie.a)].dist;
+      const FT& c2 = vs_[std::size_t(ie.b)].dist;
+      const Index tw = he_[std::size_t(ie.h)].twin;
+      may_lower[0] = can_lower(ie.y1, c1, c2, ie.length, he_[std::size_t(ie.h)].opposite.y);
+      may_lower[1] = tw >= 0 && can_lower(ie.y2, c1, c2, ie.length, he_[std::size_t(tw)].opposite.y);
+      if(!may_lower[0] && !may_lower[1]) {
+        if(i >= 0)
+          remove_from_heap(std::size_t(i));
+        return;
+      }
+    }
     const Pseudo_source s = pseudo_source_ab(ie.a, ie.b, ie.length);
     FT key = queue_key(ie.a, ie.b, ie.length, s);
-    Index i = heap_position_[std::size_t(ie.edge)];
     if(queue_key_ == Queue_key::candidate) {
       // the smallest value the edge would give to an opposite vertex, if it lowers it
       key = unreached_;
@@ -274,12 +293,13 @@ private:
           break;
         if(k == 1)
           sk.x = ie.length - s.x;
+        if(!may_lower[k])
+          continue;
         FT value, sigma;
         Parent_kind kind;
         Index root;
         evaluate_into_face(k == 0 ? ie.h : he_[std::size_t(ie.h)].twin, sk, value, kind, sigma, root);
-        const FT old = vs_[std::size_t(y)].dist;
-        if(value < old - improvement_ * old && value < key)
+        if(lowers(y, value) && value < key)
           key = value;
       }
       if(!(key < unreached_)) {
@@ -304,6 +324,23 @@ private:
       else
         sift_down(std::size_t(i));
     }
+  }
+
+  // Can the edge with end distances c1, c2 and length L lower y, whose height over the edge's line is h?
+  // False only when it cannot: every value the edge gives to y is at least min((c1 + c2 - L) / 2, c1, c2) + h.
+  // A straight value is sigma + |s q| + |q y| with q on the edge and |q y| >= h; the pseudo-source s is at
+  // c1 - sigma from one end and c2 - sigma from the other, so |s q| >= (c1 + c2 - 2 sigma - L) / 2 (triangle
+  // inequality at both ends). A value along an edge is at least min(c1, c2) + h, which also covers the ends
+  // that no pseudo-source fits (|c1 - c2| > L, for instance while one end still waits for its own lowering).
+  // The margin covers the rounding of the rebuilt pseudo-source (a few ulps of c1 + c2 + L).
+  bool can_lower(Index y, const FT& c1, const FT& c2, const FT& L, const FT& h) const
+  {
+    if(y < 0)
+      return false;
+    const FT old = vs_[std::size_t(y)].dist;
+    const FT bound = (std::min)((c1 + c2 - L) / FT(2), (std::min)(c1, c2)) + h;
+    const FT margin = FT(1024) * epsilon_ * (c1 + c2 + L + h);
+    return bound - margin < old - lowering_tolerance(y) * old;
   }
 
   void remove_from_heap(std::size_t i)
@@ -514,8 +551,7 @@ private:
   // and the DAG stays acyclic; then queues the edges around v.
   bool try_lower(Index v, const FT& value, Index h, Parent_kind kind, Index source, const FT& sigma, Index root)
   {
-    const FT old = vs_[std::size_t(v)].dist;
-    if(!(value < old - improvement_ * old))
+    if(!lowers(v, value))
       return false;
     const Index e = he_[std::size_t(h)].edge;
     if(kind == EDGE_NEIGHBOR) {
@@ -559,6 +595,8 @@ private:
         touched_.push_back(v);
     }
     last_lowered_[std::size_t(v)] = clock_;
+    if(lowerings_[std::size_t(v)] < 255)
+      ++lowerings_[std::size_t(v)];
     if(!recording_touched_)
       ++clock_; // the sources and their neighbours are all reached at time 0
     vs_[std::size_t(v)].dist = value;

@@ -1,0 +1,150 @@
+// Tests of the compact mesh that every geodesic engine builds (internal/Geodesic_mesh.h):
+//  - the angle sum of each vertex, accumulated as a product of complex corner directions with the whole turns
+//    counted (Vertex_angle_accumulator), against the sum of the corner angles by atan2, on random corners with
+//    exact 0, pi / 2 and pi among them, up to 2,000 corners (many turns) and lengths from 1e-150 to 1e150;
+//  - against an independent oracle (acos of the normalised dot product, in long double) at the apex of fans
+//    that are flat, convex cones and saddles;
+//  - on a planar grid: 2 pi inside, pi on the sides, pi / 2 or pi at the corners, and the saddle test of the
+//    engines (is_saddle_or_boundary_vertex) where it matters.
+#include <catch2/catch.hpp>
+
+#include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/mesh_generators.h>
+
+#include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+namespace PGI = CGAL::Polyhedral_geodesics_3::internal;
+
+const double pi = 3.14159265358979323846;
+
+PGI::Geodesic_mesh<double> compact(const Mesh& m)
+{
+  PGI::Geodesic_mesh<double> cm;
+  std::vector<boost::graph_traits<Mesh>::halfedge_descriptor> halfedge_of;
+  PGI::build_geodesic_mesh(m, get(CGAL::vertex_point, m), CGAL::get_initialized_vertex_index_map(m),
+                           CGAL::get_initialized_face_index_map(m), cm, halfedge_of);
+  return cm;
+}
+
+} // namespace
+
+TEST_CASE("geodesic mesh: angle sums from complex products agree with the sum of atan2", "[geodesics][mesh]")
+{
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> angle(0, pi), log_length(-6, 6);
+  double worst_scaled = 0; // largest |difference| / number of corners
+  std::size_t wrong_turns = 0;
+  for(int t = 0; t < 20000; ++t) {
+    const bool many = t % 50 == 0;
+    const int n = 1 + int(rng() % (many ? 2000 : 40));
+    // extreme scales now and then, so that the product must be rescaled
+    const double scale = t % 7 == 0 ? 1e-150 : (t % 7 == 1 ? 1e150 : 1.0);
+    PGI::Vertex_angle_accumulator accumulator(1);
+    double sum = 0;
+    for(int k = 0; k < n; ++k) {
+      const double length = scale * std::exp(log_length(rng));
+      double x, y;
+      switch(rng() % 8) {
+      case 0: x = length; y = 0; break;  // angle 0
+      case 1: x = -length; y = 0; break; // angle pi
+      case 2: x = 0; y = length; break;  // angle pi / 2
+      default: {
+        const double a = angle(rng);
+        x = length * std::cos(a);
+        y = std::abs(length * std::sin(a));
+      }
+      }
+      sum += std::atan2(y, x);
+      accumulator.add(0, x, y);
+    }
+    const double difference = std::abs(sum - accumulator.sum(0));
+    worst_scaled = (std::max)(worst_scaled, difference / n);
+    if(difference > 1) // a whole turn missed or added
+      ++wrong_turns;
+  }
+  INFO("largest difference per corner " << worst_scaled);
+  CHECK(wrong_turns == 0);
+  CHECK(worst_scaled < 1e-13);
+  // a zero vector (zero-length edge) is no corner
+  PGI::Vertex_angle_accumulator accumulator(1);
+  accumulator.add(0, 0, 0);
+  accumulator.add(0, 0, 1);
+  CHECK(accumulator.sum(0) == Approx(pi / 2).epsilon(1e-15));
+}
+
+TEST_CASE("geodesic mesh: angle sums at the apex of flat fans, cones and saddles", "[geodesics][mesh]")
+{
+  // A closed fan of n triangles around an apex at the origin; rim vertex k at angle 2 pi k / n, radius 1 and
+  // height heights[k]. The oracle: each corner angle by acos of the normalised dot product, in long double.
+  auto check_fan = [](const std::vector<double>& heights) {
+    const std::size_t n = heights.size();
+    MDCS_test::Triangle_soup<Point_3> soup;
+    soup.points.emplace_back(0, 0, 0);
+    for(std::size_t k = 0; k < n; ++k)
+      soup.points.emplace_back(std::cos(2 * pi * double(k) / double(n)), std::sin(2 * pi * double(k) / double(n)),
+                               heights[k]);
+    for(std::size_t k = 0; k < n; ++k)
+      soup.triangles.push_back({0, 1 + k, 1 + (k + 1) % n});
+    const Mesh m = MDCS_test::mesh_from_soup<Mesh>(soup);
+    long double expected = 0;
+    for(std::size_t k = 0; k < n; ++k) {
+      const Point_3& a = soup.points[1 + k];
+      const Point_3& b = soup.points[1 + (k + 1) % n];
+      const long double dot = (long double)a.x() * b.x() + (long double)a.y() * b.y() + (long double)a.z() * b.z();
+      const long double la = std::sqrt((long double)a.x() * a.x() + (long double)a.y() * a.y() + (long double)a.z() * a.z());
+      const long double lb = std::sqrt((long double)b.x() * b.x() + (long double)b.y() * b.y() + (long double)b.z() * b.z());
+      expected += std::acos(dot / (la * lb));
+    }
+    const PGI::Geodesic_mesh<double> cm = compact(m);
+    INFO("fan of " << n << " triangles, expected angle sum " << double(expected));
+    CHECK(cm.vertex_angle_sum[0] == Approx(double(expected)).epsilon(1e-13));
+    return double(expected);
+  };
+  const double flat = check_fan(std::vector<double>(12, 0.0));
+  CHECK(flat == Approx(2 * pi).epsilon(1e-15));
+  CHECK(check_fan(std::vector<double>(7, -0.8)) < 2 * pi); // a convex cone
+  std::vector<double> monkey(30), deep(400);
+  for(std::size_t k = 0; k < monkey.size(); ++k)
+    monkey[k] = 0.9 * std::cos(3 * 2 * pi * double(k) / 30.0); // three up, three down: a saddle
+  CHECK(check_fan(monkey) > 2 * pi);
+  for(std::size_t k = 0; k < deep.size(); ++k)
+    deep[k] = 5 * std::cos(40 * 2 * pi * double(k) / 400.0); // 400 corners, the sum is several turns
+  CHECK(check_fan(deep) > 6 * pi);
+}
+
+TEST_CASE("geodesic mesh: angle sums on a planar grid, and the saddle test", "[geodesics][mesh]")
+{
+  const std::size_t n = 9;
+  const Mesh m = MDCS_test::mesh_from_soup<Mesh>(MDCS_test::planar_grid<Point_3>(n, n));
+  const PGI::Geodesic_mesh<double> cm = compact(m);
+  std::size_t checked = 0;
+  for(std::size_t j = 0; j <= n; ++j)
+    for(std::size_t i = 0; i <= n; ++i) {
+      const std::size_t v = j * (n + 1) + i;
+      const bool side_i = i == 0 || i == n, side_j = j == 0 || j == n;
+      INFO("vertex " << i << ", " << j);
+      if(side_i && side_j)
+        CHECK(cm.vertex_angle_sum[v] == Approx(pi / 2).epsilon(1e-14)); // a corner: pi / 2 in one or two faces
+      else if(side_i || side_j)
+        CHECK(cm.vertex_angle_sum[v] == Approx(pi).epsilon(1e-14));
+      else
+        CHECK(cm.vertex_angle_sum[v] == Approx(2 * pi).epsilon(1e-14));
+      CHECK(bool(cm.vertex_on_boundary[v]) == (side_i || side_j));
+      // flat interior vertices count as saddles for the exact engines (a margin of 1e-9 below 2 pi)
+      CHECK(PGI::is_saddle_or_boundary_vertex(cm, v));
+      ++checked;
+    }
+  CHECK(checked == cm.number_of_vertices);
+}
