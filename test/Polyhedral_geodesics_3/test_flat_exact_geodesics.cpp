@@ -2,15 +2,13 @@
 //  - planar meshes (subdivided triangle and square, jittered grids) give the Euclidean distances at every vertex
 //    and at random surface points, and straight paths as long as the distances, from sources at a corner, at an
 //    inner vertex, inside a face, on an edge, and from several sources;
-//  - the dependence DAG is acyclic after every run (through the engine on the compact mesh), and every traced
-//    path ends at a source, with a length close to the reported distance on curved meshes (bumpy sphere,
-//    subdivided cube, square with a hole, CGAL's elephant) and never below the exact distance;
+//  - every traced path ends at a source, with a length close to the reported distance on curved meshes (bumpy
+//    sphere, subdivided cube, square with a hole, CGAL's elephant) and never below the exact distance (the
+//    dependence DAG and the settling of repeated lowerings, on the engine itself: test_flat_exact_engine.cpp);
 //  - the mean relative error against Exact_geodesic_distances_3 stays below measured bounds;
 //  - distance limit and stop targets, Surface_mesh and Polyhedron_3 agree, degenerate input (zero-length edge,
 //    collinear triangle, needles, two components), invalid input, progress and cancellation, statistics;
-//  - the large-page arrays of the engine, and a reused object giving a fresh object's results bit for bit;
-//  - a cluster of repeated lowerings (Loop subdivision of CGAL's mannequin-devil) settles with few values per
-//    vertex and distances within 1e-7 of those with rounding-level lowerings only.
+//  - the large-page arrays of the engine, and a reused object giving a fresh object's results bit for bit.
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/cgal_meshes.h>
@@ -23,13 +21,11 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,8 +43,6 @@ namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Flat_exact_geodesic_distances_3<Mesh> Geodesics;
 typedef PG::Exact_geodesic_distances_3<Mesh> Exact_geodesics;
 typedef Geodesics::Face_location Face_location;
-typedef PG::internal::Flat_exact_propagation<double> Engine;
-typedef PG::internal::Geodesic_mesh<double> Compact_mesh;
 using MDCS_test::Vec3;
 
 const double tolerance = 1e-12;
@@ -232,64 +226,6 @@ void check_planar(Geodesics& g, const Mesh& m, const std::vector<Vec3>& sources,
   CHECK(r.worst_length <= path_tolerance);
 }
 
-// The compact mesh and the engine, for the DAG checks.
-struct Engine_run
-{
-  Compact_mesh cm;
-  std::vector<halfedge_descriptor> halfedge_of;
-  std::unique_ptr<Engine> engine;
-
-  explicit Engine_run(const Mesh& m)
-  {
-    PG::internal::build_geodesic_mesh(m, get(CGAL::vertex_point, m), CGAL::get_initialized_vertex_index_map(m),
-                                      CGAL::get_initialized_face_index_map(m), cm, halfedge_of);
-    engine.reset(new Engine(cm));
-  }
-
-  // Runs from the given vertex sources and face sources (face index, barycentric coordinates).
-  void run(const std::vector<int>& vertex_sources, const std::vector<std::pair<int, std::array<double, 3>>>& face_sources)
-  {
-    engine->clear();
-    int id = 0;
-    for(int v : vertex_sources) engine->add_vertex_source(v, id++);
-    for(const auto& f : face_sources) engine->add_face_source(f.first, f.second, id++);
-    CGAL::MDCS::No_progress progress;
-    engine->run(progress);
-  }
-
-  // Traces the path to every vertex with the engine: the number of paths that do not end at a source (a
-  // vertex at distance 0 or a face node) or that throw.
-  std::size_t lost_paths() const
-  {
-    std::size_t lost = 0;
-    for(std::size_t v = 0; v < cm.number_of_vertices; ++v) {
-      const int h = cm.vertex_halfedge[v];
-      if(h < 0 || std::isinf(engine->vertex_distance(int(v))))
-        continue;
-      std::array<double, 3> b = {0, 0, 0};
-      b[std::size_t(h % 3)] = 1;
-      std::vector<PG::internal::Geodesic_path_node<double>> nodes;
-      try {
-        engine->trace_path(h / 3, b, [&](const PG::internal::Geodesic_path_node<double>& n) { nodes.push_back(n); });
-      }
-      catch(const std::exception&) {
-        ++lost;
-        continue;
-      }
-      if(nodes.empty()) {
-        ++lost;
-        continue;
-      }
-      const auto& last = nodes.back();
-      const bool at_source = last.kind == PG::internal::Geodesic_path_node<double>::FACE ||
-                             (last.kind == PG::internal::Geodesic_path_node<double>::VERTEX &&
-                              engine->vertex_distance(last.index) == 0);
-      if(!at_source) ++lost;
-    }
-    return lost;
-  }
-};
-
 // The mean relative error of the flat-exact distances against the exact ones over the vertices at a positive
 // exact distance; `worst` receives the largest.
 double mean_relative_error(Geodesics& flat, Exact_geodesics& exact, const Mesh& m, double& worst)
@@ -420,88 +356,6 @@ TEST_CASE("flat-exact geodesics: several sources on a planar mesh", "[geodesics]
   INFO(r);
   CHECK(paths_end_at_sources(r));
   CHECK(r.worst_length <= 0.01); // measured: 0.22% (paths next to a bisector bend at a vertex)
-}
-
-TEST_CASE("flat-exact geodesics: the dependence DAG stays acyclic and every path reaches a source",
-          "[geodesics][flat_exact]")
-{
-  std::array<std::size_t, 2> coincident;
-  struct Case
-  {
-    std::string name;
-    MDCS_test::Triangle_soup<Point_3> soup;
-  };
-  std::vector<Case> cases = {{"jittered grid", MDCS_test::jittered_planar_grid<Point_3>(20, 20, 1, 1, 0.2, 7)},
-                             {"bumpy sphere", MDCS_test::bumpy_sphere<Point_3>(3, 0.15, 4)},
-                             {"subdivided cube", MDCS_test::subdivided_cube<Point_3>(6)},
-                             {"square with a hole", MDCS_test::square_with_hole<Point_3>(20, 6, 14, 8, 12)},
-                             {"terrain", MDCS_test::height_field_grid<Point_3>(24, 0.3, 2)},
-                             {"zero-length edge", MDCS_test::grid_with_zero_length_edge<Point_3>(8, coincident)},
-                             {"two components", MDCS_test::two_grids<Point_3>(6)}};
-  Mesh elephant;
-  if(MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh("elephant.off"), elephant))
-    cases.push_back({"elephant", MDCS_test::Triangle_soup<Point_3>()});
-  for(const Case& c : cases) {
-    INFO(c.name);
-    const Mesh m = c.soup.points.empty() ? elephant : make_mesh(c.soup);
-    Engine_run run(m);
-    const int nv = int(run.cm.number_of_vertices), nf = int(run.cm.number_of_faces);
-    const std::vector<std::pair<std::vector<int>, std::vector<std::pair<int, std::array<double, 3>>>>> configurations = {
-      {{0}, {}},
-      {{nv / 2}, {}},
-      {{nv / 3, (2 * nv) / 3 + 1}, {}},
-      {{}, {{nf / 2, {0.2, 0.5, 0.3}}}},
-      {{nv - 1}, {{nf / 5, {0.1, 0.1, 0.8}}, {(4 * nf) / 5, {0.5, 0.5, 0}}}}};
-    for(std::size_t k = 0; k < configurations.size(); ++k) {
-      INFO("source configuration " << k);
-      run.run(configurations[k].first, configurations[k].second);
-      CHECK(run.engine->dependence_graph_is_acyclic());
-      CHECK(run.lost_paths() == 0);
-    }
-  }
-}
-
-TEST_CASE("flat-exact geodesics: a cluster of repeated lowerings settles (Loop subdivision of mannequin-devil)",
-          "[geodesics][flat_exact]")
-{
-  // In strips of elongated faces the vertices lower one another in turn by ever smaller amounts (measured with
-  // this source: up to 1,647 values for one vertex, 2.64 values per vertex). From a vertex's fourth value on, a
-  // change must be at least 1e-9 of the distance (measured: 1.50 values per vertex, no distance changed by more
-  // than 8.1e-9 of itself).
-  Mesh m;
-  if(!MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh("mannequin-devil.off"), m)) {
-    WARN("CGAL's demo meshes not found (MDCS_CGAL_MESH_DIR): the case is skipped");
-    return;
-  }
-  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(1));
-  Engine_run settled(m), creeping(m);
-  creeping.engine->set_settle_tolerance(0);
-  const int source = 17996;
-  REQUIRE(std::size_t(source) < settled.cm.number_of_vertices);
-  settled.run({source}, {});
-  creeping.run({source}, {});
-  const double nv = double(settled.cm.number_of_vertices);
-  const double values_settled = double(settled.engine->statistics().vertex_updates) / nv;
-  const double values_creeping = double(creeping.engine->statistics().vertex_updates) / nv;
-  INFO("values per vertex: " << values_settled << " settled, " << values_creeping << " with rounding only");
-  CHECK(values_creeping > 2.2);
-  CHECK(values_settled < 1.7);
-  double largest_change = 0;
-  std::size_t unreached = 0;
-  for(int v = 0; v < int(nv); ++v) {
-    const double a = settled.engine->vertex_distance(v), b = creeping.engine->vertex_distance(v);
-    if(std::isinf(a) || std::isinf(b)) {
-      ++unreached;
-      continue;
-    }
-    if(b > 0)
-      largest_change = (std::max)(largest_change, std::abs(a - b) / b);
-  }
-  INFO("largest relative change " << largest_change);
-  CHECK(unreached == 0);
-  CHECK(largest_change < 1e-7);
-  CHECK(settled.engine->dependence_graph_is_acyclic());
-  CHECK(settled.lost_paths() == 0);
 }
 
 TEST_CASE("flat-exact geodesics: curved meshes, error against the exact distances, paths", "[geodesics][flat_exact]")
