@@ -5,7 +5,10 @@
 //  - against an independent oracle (acos of the normalised dot product, in long double) at the apex of fans
 //    that are flat, convex cones and saddles;
 //  - on a planar grid: 2 pi inside, pi on the sides, pi / 2 or pi at the corners, and the saddle test of the
-//    engines (is_saddle_or_boundary_vertex) where it matters.
+//    engines (is_saddle_or_boundary_vertex) where it matters;
+//  - the packed halfedge records (one pass over the halfedges fills twins, edges, lengths, frames and the vertex
+//    data), checked against the original mesh on Surface_mesh and Polyhedron_3, closed and with boundary, and on
+//    a mesh whose faces were removed and re-added (faces not in the order of their halfedges).
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
@@ -14,9 +17,13 @@
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -29,6 +36,8 @@ namespace PGI = CGAL::Polyhedral_geodesics_3::internal;
 
 const double pi = 3.14159265358979323846;
 
+typedef CGAL::Polyhedron_3<K> Polyhedron;
+
 PGI::Geodesic_mesh<double> compact(const Mesh& m)
 {
   PGI::Geodesic_mesh<double> cm;
@@ -36,6 +45,80 @@ PGI::Geodesic_mesh<double> compact(const Mesh& m)
   PGI::build_geodesic_mesh(m, get(CGAL::vertex_point, m), CGAL::get_initialized_vertex_index_map(m),
                            CGAL::get_initialized_face_index_map(m), cm, halfedge_of);
   return cm;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+// Every field of the packed halfedge records and of the vertex arrays, against the original mesh.
+template <class TM>
+void check_compact_mesh(const TM& tm)
+{
+  typedef boost::graph_traits<TM> GT;
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
+  const auto fim = CGAL::get_initialized_face_index_map(tm);
+  const auto vpm = get(CGAL::vertex_point, tm);
+  PGI::Geodesic_mesh<double> cm;
+  std::vector<typename GT::halfedge_descriptor> halfedge_of;
+  PGI::build_geodesic_mesh(tm, vpm, vim, fim, cm, halfedge_of);
+  typedef PGI::Geodesic_mesh<double> CM;
+  const std::size_t nh = 3 * cm.number_of_faces;
+  REQUIRE(cm.number_of_vertices == num_vertices(tm));
+  REQUIRE(cm.number_of_faces == num_faces(tm));
+  REQUIRE(cm.he.size() == nh);
+  CHECK(cm.number_of_edges == num_edges(tm));
+  CHECK(cm.edge_halfedge.size() == cm.number_of_edges);
+  auto distance = [&](typename GT::vertex_descriptor a, typename GT::vertex_descriptor b) {
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, a), get(vpm, b))));
+  };
+  std::size_t failures = 0, previous_edge_halfedge = 0;
+  std::vector<char> edge_seen(cm.number_of_edges, 0);
+  for(std::size_t h = 0; h < nh; ++h) {
+    const PGI::Geodesic_halfedge<double>& r = cm.he[h];
+    const auto oh = halfedge_of[h];
+    bool ok = std::size_t(get(fim, face(oh, tm))) == h / 3;                      // the face of the record
+    ok = ok && r.source == CM::Index(get(vim, source(oh, tm)));
+    ok = ok && cm.target(CM::Index(h)) == CM::Index(get(vim, target(oh, tm)));
+    ok = ok && cm.opposite_vertex(CM::Index(h)) == CM::Index(get(vim, target(next(oh, tm), tm)));
+    // the twin: the record of the mesh's opposite halfedge, -1 at the border, and an involution
+    if(is_border(opposite(oh, tm), tm))
+      ok = ok && r.twin == -1;
+    else
+      ok = ok && r.twin >= 0 && halfedge_of[std::size_t(r.twin)] == opposite(oh, tm) &&
+           cm.he[std::size_t(r.twin)].twin == CM::Index(h);
+    // the edge: shared with the twin, its canonical halfedge the first of the two, numbered in that order
+    ok = ok && r.edge >= 0 && std::size_t(r.edge) < cm.number_of_edges;
+    if(ok && r.twin >= 0)
+      ok = cm.he[std::size_t(r.twin)].edge == r.edge;
+    if(ok && !edge_seen[std::size_t(r.edge)]) {
+      edge_seen[std::size_t(r.edge)] = 1;
+      ok = cm.edge_halfedge[std::size_t(r.edge)] == CM::Index(h) && (r.edge == 0 || h > previous_edge_halfedge);
+      previous_edge_halfedge = h;
+    }
+    // the length, the same bits on both sides, and the frame: the opposite corner at the lengths of the two
+    // other edges from the ends, above the edge
+    ok = ok && r.length == Approx(distance(source(oh, tm), target(oh, tm))).epsilon(1e-15);
+    if(ok && r.twin >= 0)
+      ok = same_bits(r.length, cm.he[std::size_t(r.twin)].length);
+    const double a = cm.he[std::size_t(CM::prev(CM::Index(h)))].length; // from the opposite corner to the source
+    const double b = cm.he[std::size_t(CM::next(CM::Index(h)))].length; // from the target to the opposite corner
+    const double x = r.opposite.x, y = r.opposite.y;
+    ok = ok && y >= 0 && std::hypot(x, y) == Approx(a).epsilon(1e-12).margin(1e-14) &&
+         std::hypot(x - r.length, y) == Approx(b).epsilon(1e-12).margin(1e-14);
+    if(!ok) {
+      ++failures;
+      if(failures < 5)
+        FAIL_CHECK("compact halfedge " << h << " disagrees with the mesh");
+    }
+  }
+  CHECK(failures == 0);
+  for(auto v : vertices(tm)) {
+    const std::size_t i = get(vim, v);
+    INFO("vertex " << i);
+    const CM::Index h = cm.vertex_halfedge[i];
+    REQUIRE(h >= 0);
+    CHECK(cm.source(h) == CM::Index(i));
+    CHECK(bool(cm.vertex_on_boundary[i]) == CGAL::is_border(v, tm).has_value());
+  }
 }
 
 } // namespace
@@ -147,4 +230,39 @@ TEST_CASE("geodesic mesh: angle sums on a planar grid, and the saddle test", "[g
       ++checked;
     }
   CHECK(checked == cm.number_of_vertices);
+}
+
+TEST_CASE("geodesic mesh: the packed halfedge records agree with the mesh", "[geodesics][mesh]")
+{
+  SECTION("closed Surface_mesh (icosphere)")
+  {
+    check_compact_mesh(MDCS_test::mesh_from_soup<Mesh>(MDCS_test::icosphere<Point_3>(2)));
+  }
+  SECTION("Surface_mesh with boundary (planar grid)")
+  {
+    check_compact_mesh(MDCS_test::mesh_from_soup<Mesh>(MDCS_test::planar_grid<Point_3>(7, 5)));
+  }
+  SECTION("Polyhedron_3, closed and with boundary")
+  {
+    check_compact_mesh(MDCS_test::mesh_from_soup<Polyhedron>(MDCS_test::icosphere<Point_3>(1)));
+    check_compact_mesh(MDCS_test::mesh_from_soup<Polyhedron>(MDCS_test::subdivided_triangle<Point_3>(6)));
+  }
+  SECTION("faces removed and re-added: face indices not in the order of the halfedges")
+  {
+    Mesh m = MDCS_test::mesh_from_soup<Mesh>(MDCS_test::icosphere<Point_3>(2));
+    std::vector<std::array<Mesh::Vertex_index, 3>> removed;
+    std::size_t k = 0;
+    for(auto f : std::vector<Mesh::Face_index>(faces(m).begin(), faces(m).end()))
+      if(++k % 3 == 0) {
+        auto h = halfedge(f, m);
+        removed.push_back({source(h, m), target(h, m), target(next(h, m), m)});
+        CGAL::Euler::remove_face(h, m);
+      }
+    for(auto it = removed.rbegin(); it != removed.rend(); ++it)
+      CGAL::Euler::add_face(std::vector<Mesh::Vertex_index>{(*it)[0], (*it)[1], (*it)[2]}, m);
+    m.collect_garbage();
+    REQUIRE(CGAL::is_valid_polygon_mesh(m));
+    REQUIRE(CGAL::is_closed(m));
+    check_compact_mesh(m);
+  }
 }

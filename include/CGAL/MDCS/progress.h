@@ -8,6 +8,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace CGAL {
 namespace MDCS {
@@ -36,6 +37,11 @@ public:
 };
 
 namespace internal {
+
+// True for the default callback: an algorithm may then skip the work of computing a fraction nobody reads.
+template <class Progress>
+struct Reports_nothing : std::is_same<typename std::decay<Progress>::type, No_progress>
+{};
 
 // Calls the callback about every `total / 100` steps; throws Operation_cancelled when it returns false.
 template <class Progress>

@@ -6,7 +6,8 @@
 // 3f+2 (halfedge(f), next, next(next)), every halfedge knows its twin (or -1 on the boundary) and, in
 // its own planar frame, the position of the opposite corner. Building it once makes the propagation
 // independent of the FaceGraph model (Surface_mesh, Polyhedron_3 with or without ids, OpenMesh) and
-// keeps the per-window work on contiguous arrays.
+// keeps the per-window work on contiguous arrays. The data of a halfedge is one packed record, which every
+// engine reads in place, and the records are filled in a single pass over the halfedges.
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_MESH_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_MESH_H
@@ -58,6 +59,19 @@ struct Point_2_ft
 template <class T>
 using Large_vector = std::vector<T, Large_page_allocator<T>>;
 
+// The data of one compact halfedge, packed: the propagation reads a face's three halfedges together (120
+// contiguous bytes with double), and one array instead of five costs fewer page faults when it is filled.
+template <class FT>
+struct Geodesic_halfedge
+{
+  Point_2_ft<FT> opposite; // the opposite corner in the halfedge's frame: source at (0,0), target at (length,0),
+                           // the face on the side y >= 0
+  FT length;               // of the edge (the same, bit for bit, on both halfedges)
+  std::int32_t source;     // the source vertex
+  std::int32_t twin;       // the twin halfedge, -1 on the boundary
+  std::int32_t edge;       // the undirected edge
+};
+
 template <class FT>
 struct Geodesic_mesh
 {
@@ -68,12 +82,7 @@ struct Geodesic_mesh
   std::size_t number_of_edges = 0;
 
   Large_vector<std::array<FT, 3>> points;     // per vertex
-  Large_vector<Index> he_source;              // per compact halfedge (3 per face): its source vertex
-  Large_vector<Index> he_twin;                // twin halfedge or -1 on the boundary
-  Large_vector<Index> he_edge;                // undirected edge id
-  Large_vector<FT> he_length;                 // length of the edge
-  Large_vector<Point_2_ft<FT>> he_opposite;   // opposite corner in the halfedge's frame: source at (0,0),
-                                              // target at (length,0), the face on the side y >= 0
+  Large_vector<Geodesic_halfedge<FT>> he;     // per compact halfedge (3 per face)
   Large_vector<Index> edge_halfedge;          // canonical halfedge of each edge (the one the edge frame uses)
   Large_vector<Index> vertex_halfedge;        // one compact halfedge whose source is the vertex, -1 if isolated
   Large_vector<char> vertex_on_boundary;
@@ -82,9 +91,9 @@ struct Geodesic_mesh
   static Index face_of(Index h) { return h / 3; }
   static Index next(Index h) { return h % 3 == 2 ? h - 2 : h + 1; }
   static Index prev(Index h) { return h % 3 == 0 ? h + 2 : h - 1; }
-  Index source(Index h) const { return he_source[h]; }
-  Index target(Index h) const { return he_source[next(h)]; }
-  Index opposite_vertex(Index h) const { return he_source[prev(h)]; }
+  Index source(Index h) const { return he[std::size_t(h)].source; }
+  Index target(Index h) const { return he[std::size_t(next(h))].source; }
+  Index opposite_vertex(Index h) const { return he[std::size_t(prev(h))].source; }
 };
 
 // The outgoing compact halfedges of every vertex, as compressed rows: those of v are
@@ -97,13 +106,13 @@ void build_vertex_star(const Geodesic_mesh<FT>& mesh, std::vector<typename Geode
   const std::size_t nv = mesh.number_of_vertices, nh = 3 * mesh.number_of_faces;
   star_begin.assign(nv + 1, 0);
   for(std::size_t h = 0; h < nh; ++h)
-    ++star_begin[std::size_t(mesh.he_source[h]) + 1];
+    ++star_begin[std::size_t(mesh.he[h].source) + 1];
   for(std::size_t v = 0; v < nv; ++v)
     star_begin[v + 1] += star_begin[v];
   star.assign(nh, 0);
   std::vector<Index> fill(star_begin.begin(), star_begin.end() - 1);
   for(std::size_t h = 0; h < nh; ++h)
-    star[std::size_t(fill[std::size_t(mesh.he_source[h])]++)] = Index(h);
+    star[std::size_t(fill[std::size_t(mesh.he[h].source)]++)] = Index(h);
 }
 
 // The safety net of the window engines after a run with interval merging: calls expand(w) for every reached
@@ -145,27 +154,23 @@ FT squared_distance_3(const std::array<FT, 3>& a, const std::array<FT, 3>& b)
   return dx * dx + dy * dy + dz * dz;
 }
 
-// Fills mesh.he_opposite for halfedge h from the 3D points, robustly: the foot of the opposite corner is
-// a projection (dot product) and its height the norm of a cross product, so needle and zero-area faces
-// give a tiny non-negative height instead of the square root of a negative number.
+// The opposite corner c of the halfedge from a to b (length `length`) in the halfedge's frame, robustly: the
+// foot of c is a projection (dot product) and its height the norm of a cross product, so needle and zero-area
+// faces give a tiny non-negative height instead of the square root of a negative number.
 template <class FT>
-void compute_halfedge_frame(Geodesic_mesh<FT>& mesh, typename Geodesic_mesh<FT>::Index h)
+Point_2_ft<FT> halfedge_frame_opposite(const std::array<FT, 3>& a, const std::array<FT, 3>& b,
+                                       const std::array<FT, 3>& c, const FT& length)
 {
   using std::sqrt;
-  const auto& a = mesh.points[mesh.source(h)];
-  const auto& b = mesh.points[mesh.target(h)];
-  const auto& c = mesh.points[mesh.opposite_vertex(h)];
   const FT ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const FT vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-  const FT length = mesh.he_length[h];
   if(length == FT(0)) {
     // Zero-length edge: the face is a segment from a to c; put c on the y axis of a degenerate frame.
-    mesh.he_opposite[h] = Point_2_ft<FT>{FT(0), sqrt(vx * vx + vy * vy + vz * vz)};
-    return;
+    return Point_2_ft<FT>{FT(0), sqrt(vx * vx + vy * vy + vz * vz)};
   }
   const FT dot = ux * vx + uy * vy + uz * vz;
   const FT cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-  mesh.he_opposite[h] = Point_2_ft<FT>{dot / length, sqrt(cx * cx + cy * cy + cz * cz) / length};
+  return Point_2_ft<FT>{dot / length, sqrt(cx * cx + cy * cy + cz * cz) / length};
 }
 
 // The sum of the corner angles around each vertex without an atan2 per corner (which took a tenth of the
@@ -180,13 +185,14 @@ void compute_halfedge_frame(Geodesic_mesh<FT>& mesh, typename Geodesic_mesh<FT>:
 class Vertex_angle_accumulator
 {
 public:
-  explicit Vertex_angle_accumulator(std::size_t n) : re_(n, 1.0), im_(n, 0.0), turns_(n, 0) {}
+  explicit Vertex_angle_accumulator(std::size_t n) : acc_(n, Product{1.0, 0.0, 0}) {}
 
   void add(std::size_t v, double x, double y)
   {
     if(x == 0 && y == 0)
       return; // a zero-length edge: no corner
-    const double r = re_[v], i = im_[v];
+    Product& p = acc_[v];
+    const double r = p.re, i = p.im;
     double nr = r * x - i * y, ni = r * y + i * x;
     // The product is a direction: its length (the product of edge lengths) only needs to stay far from under-
     // and overflow. Rescaling by a power of two is exact and only needed now and then.
@@ -200,34 +206,123 @@ public:
       ni = std::ldexp(ni, -e);
     }
     if(ni >= 0 && (i < 0 || (r < 0 && nr > 0)))
-      ++turns_[v];
-    re_[v] = nr;
-    im_[v] = ni;
+      ++p.turns;
+    p.re = nr;
+    p.im = ni;
   }
 
   double sum(std::size_t v) const
   {
     const double two_pi = 2 * 3.14159265358979323846;
-    double a = std::atan2(im_[v], re_[v]);
+    const Product& p = acc_[v];
+    double a = std::atan2(p.im, p.re);
     if(a < 0)
       a += two_pi;
-    return two_pi * turns_[v] + a;
+    return two_pi * p.turns + a;
   }
 
 private:
-  std::vector<double> re_, im_;
-  std::vector<int> turns_;
+  struct Product // the running product of a vertex's corner directions, and the whole turns so far
+  {
+    double re, im;
+    int turns;
+  };
+  std::vector<Product> acc_;
 };
+
+// The halfedge records of the compact mesh (and halfedge_of), from the mesh's connectivity and mesh.points.
+template <class FT, class TriangleMesh, class VertexIndexMap, class FaceIndexMap>
+void build_halfedge_records(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim, Geodesic_mesh<FT>& mesh,
+                            std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& halfedge_of)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef Geodesic_mesh<FT> Mesh;
+  typedef typename Mesh::Index Index;
+  using std::sqrt;
+
+  // The records are written once, in order, by the last pass below; the passes before it fill small arrays.
+  // At 150k vertices the 36 MB of records no longer fit the processor's cache, while arrays of 4 bytes per
+  // halfedge do: filling the records field by field, or reading a twin's record, cost 1.3 times the time.
+  const std::size_t nf = mesh.number_of_faces, nh = 3 * nf;
+  halfedge_of.resize(nh);
+  Large_vector<Index> source_of(nh), twin_of(nh), edge_of(nh);
+
+  // Connectivity: the source of each compact halfedge, and the original halfedge it stands for.
+  {
+    std::vector<char> face_seen(nf, 0);
+    for(auto f : faces(tm)) {
+      const std::size_t fi = get(fim, f);
+      if(fi >= nf || face_seen[fi])
+        throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the face index map is not a bijection onto [0, num_faces)");
+      face_seen[fi] = 1;
+      halfedge_descriptor h = halfedge(f, tm);
+      if(next(next(next(h, tm), tm), tm) != h)
+        throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the mesh has a face that is not a triangle "
+                                    "(triangulate it first, e.g. with CGAL::Polygon_mesh_processing::triangulate_faces)");
+      for(int k = 0; k < 3; ++k, h = next(h, tm)) {
+        halfedge_of[3 * fi + k] = h;
+        source_of[3 * fi + k] = Index(get(vim, source(h, tm)));
+      }
+    }
+  }
+
+  // The twins, through the mesh's own opposite() when both sides are faces (going through the original
+  // connectivity, not vertex pairs, keeps pinched vertices and duplicated edges of non-manifold inputs apart).
+  // A pass of its own: its accesses to the mesh are random, and without other work in the loop the processor
+  // overlaps many of them.
+  for(std::size_t h = 0; h < nh; ++h) {
+    Index twin = -1;
+    const halfedge_descriptor oh = opposite(halfedge_of[h], tm);
+    if(!is_border(oh, tm)) {
+      const auto of = face(oh, tm);
+      halfedge_descriptor g = halfedge(of, tm);
+      int ok = 0;
+      while(g != oh) { g = next(g, tm); ++ok; }
+      twin = Index(3 * get(fim, of) + std::size_t(ok));
+    }
+    twin_of[h] = twin;
+  }
+
+  // The edges, numbered in the order of their first halfedge (the canonical one); the second gets the number
+  // ahead, when the first is numbered.
+  mesh.edge_halfedge.clear();
+  mesh.edge_halfedge.reserve(nh); // an upper bound (closed meshes use half): no reallocation
+  for(std::size_t h = 0; h < nh; ++h) {
+    const Index twin = twin_of[h];
+    if(twin < 0 || std::size_t(twin) > h) {
+      edge_of[h] = Index(mesh.edge_halfedge.size());
+      if(twin >= 0)
+        edge_of[std::size_t(twin)] = edge_of[h];
+      mesh.edge_halfedge.push_back(Index(h));
+    }
+  }
+
+  // The records, in order: the length of the edge, computed from the canonical halfedge's end points in that
+  // order on both sides, so that the two halfedges agree bit for bit (the window frames of the two sides are
+  // mirror images), and the opposite corner in the halfedge's frame.
+  mesh.he.clear();
+  mesh.he.reserve(nh);
+  for(std::size_t h = 0; h < nh; ++h) {
+    const Index twin = twin_of[h];
+    const Index a = source_of[h], b = source_of[std::size_t(Mesh::next(Index(h)))];
+    const Index c = source_of[std::size_t(Mesh::prev(Index(h)))];
+    const bool canonical = twin < 0 || std::size_t(twin) > h;
+    const FT length = sqrt(canonical ? squared_distance_3(mesh.points[std::size_t(a)], mesh.points[std::size_t(b)])
+                                     : squared_distance_3(mesh.points[std::size_t(b)], mesh.points[std::size_t(a)]));
+    mesh.he.push_back(Geodesic_halfedge<FT>{halfedge_frame_opposite(mesh.points[std::size_t(a)],
+                                                                     mesh.points[std::size_t(b)],
+                                                                     mesh.points[std::size_t(c)], length),
+                                            length, a, twin, edge_of[h]});
+  }
+  mesh.number_of_edges = mesh.edge_halfedge.size();
+}
 
 template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
 void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim,
                          Geodesic_mesh<FT>& mesh,
                          std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& halfedge_of)
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
   typedef typename Geodesic_mesh<FT>::Index Index;
-  using std::sqrt;
 
   const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
   if(nv > std::size_t(INT32_MAX / 2) || 3 * nf > std::size_t(INT32_MAX / 2))
@@ -243,82 +338,26 @@ void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndex
     mesh.points[i] = {FT(CGAL::to_double(p.x())), FT(CGAL::to_double(p.y())), FT(CGAL::to_double(p.z()))};
   }
 
-  mesh.he_source.assign(3 * nf, -1);
-  mesh.he_twin.assign(3 * nf, -1);
-  halfedge_of.assign(3 * nf, halfedge_descriptor());
-  std::vector<char> face_seen(nf, 0);
-  for(auto f : faces(tm)) {
-    const std::size_t fi = get(fim, f);
-    if(fi >= nf || face_seen[fi])
-      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the face index map is not a bijection onto [0, num_faces)");
-    face_seen[fi] = 1;
-    halfedge_descriptor h = halfedge(f, tm);
-    if(next(next(next(h, tm), tm), tm) != h)
-      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the mesh has a face that is not a triangle "
-                                  "(triangulate it first, e.g. with CGAL::Polygon_mesh_processing::triangulate_faces)");
-    for(int k = 0; k < 3; ++k, h = next(h, tm)) {
-      halfedge_of[3 * fi + k] = h;
-      mesh.he_source[3 * fi + k] = Index(get(vim, source(h, tm)));
-    }
-  }
+  // The halfedge records; their temporary arrays are released before the vertex pass.
+  build_halfedge_records(tm, vim, fim, mesh, halfedge_of);
 
-  // Twins: match halfedge (a,b) with (b,a) through the mesh's own opposite() when both sides are faces.
-  // Going through the original connectivity (not vertex pairs) keeps pinched vertices and duplicated
-  // edges of non-manifold inputs apart.
-  {
-    // Map the original halfedge to its compact index through the face index + position in the face.
-    for(std::size_t fi = 0; fi < nf; ++fi)
-      for(int k = 0; k < 3; ++k) {
-        const Index h = Index(3 * fi + k);
-        const halfedge_descriptor oh = opposite(halfedge_of[h], tm);
-        if(is_border(oh, tm))
-          continue;
-        const std::size_t ofi = get(fim, face(oh, tm));
-        halfedge_descriptor g = halfedge(face(oh, tm), tm);
-        int ok = 0;
-        while(g != oh) { g = next(g, tm); ++ok; }
-        mesh.he_twin[h] = Index(3 * ofi + ok);
-      }
-  }
-
-  mesh.he_edge.assign(3 * nf, -1);
-  mesh.edge_halfedge.clear();
-  mesh.edge_halfedge.reserve(3 * nf / 2 + 1);
-  for(Index h = 0; h < Index(3 * nf); ++h) {
-    if(mesh.he_edge[h] >= 0)
-      continue;
-    const Index e = Index(mesh.edge_halfedge.size());
-    mesh.edge_halfedge.push_back(h);
-    mesh.he_edge[h] = e;
-    if(mesh.he_twin[h] >= 0)
-      mesh.he_edge[mesh.he_twin[h]] = e;
-  }
-  mesh.number_of_edges = mesh.edge_halfedge.size();
-
-  mesh.he_length.resize(3 * nf);
-  for(Index h = 0; h < Index(3 * nf); ++h)
-    mesh.he_length[h] = sqrt(squared_distance_3(mesh.points[mesh.source(h)], mesh.points[mesh.target(h)]));
-  // Twins must agree bit for bit on the length (the window frames of the two sides are mirror images).
-  for(Index h = 0; h < Index(3 * nf); ++h)
-    if(mesh.he_twin[h] >= 0 && mesh.he_twin[h] < h)
-      mesh.he_length[h] = mesh.he_length[mesh.he_twin[h]];
-  mesh.he_opposite.resize(3 * nf);
-  for(Index h = 0; h < Index(3 * nf); ++h)
-    compute_halfedge_frame(mesh, h);
-
+  // Per vertex (a pass of its own, for the same reason as the twins): one outgoing halfedge, the boundary flag,
+  // and the sum of the corner angles.
+  const std::size_t nh = 3 * nf;
   mesh.vertex_halfedge.assign(nv, -1);
   mesh.vertex_on_boundary.assign(nv, 0);
   Vertex_angle_accumulator angles(nv);
-  for(Index h = 0; h < Index(3 * nf); ++h) {
-    const Index v = mesh.source(h);
-    if(mesh.vertex_halfedge[v] < 0)
-      mesh.vertex_halfedge[v] = h;
-    if(mesh.he_twin[h] < 0) {
-      mesh.vertex_on_boundary[v] = 1;
-      mesh.vertex_on_boundary[mesh.target(h)] = 1;
+  for(std::size_t h = 0; h < nh; ++h) {
+    const Geodesic_halfedge<FT>& r = mesh.he[h];
+    const Index a = r.source;
+    if(mesh.vertex_halfedge[std::size_t(a)] < 0)
+      mesh.vertex_halfedge[std::size_t(a)] = Index(h);
+    if(r.twin < 0) {
+      mesh.vertex_on_boundary[std::size_t(a)] = 1;
+      mesh.vertex_on_boundary[std::size_t(mesh.target(Index(h)))] = 1;
     }
     // the corner at the source of h, between h and prev(h) reversed: the opposite corner in h's frame
-    angles.add(std::size_t(v), to_double_value(mesh.he_opposite[h].x), to_double_value(mesh.he_opposite[h].y));
+    angles.add(std::size_t(a), to_double_value(r.opposite.x), to_double_value(r.opposite.y));
   }
   mesh.vertex_angle_sum.resize(nv);
   for(std::size_t v = 0; v < nv; ++v)

@@ -110,8 +110,8 @@ public:
     const Index k = Index(face_sources_.size());
     face_sources_.push_back(s);
     incarnations_.push_back({f, k});
-    if(s.halfedge >= 0 && mesh_.he_twin[std::size_t(s.halfedge)] >= 0)
-      incarnations_.push_back({Mesh::face_of(mesh_.he_twin[std::size_t(s.halfedge)]), k});
+    if(s.halfedge >= 0 && mesh_.he[std::size_t(s.halfedge)].twin >= 0)
+      incarnations_.push_back({Mesh::face_of(mesh_.he[std::size_t(s.halfedge)].twin), k});
     for(Index g : faces_of_source(k))
       for(int c = 0; c < 3; ++c) {
         const Index u = mesh_.source(3 * g + c);
@@ -180,7 +180,7 @@ protected:
   std::array<Index, 2> faces_of_source(Index k) const
   {
     const Face_source& s = face_sources_[std::size_t(k)];
-    const Index tw = s.halfedge >= 0 ? mesh_.he_twin[std::size_t(s.halfedge)] : Index(-1);
+    const Index tw = s.halfedge >= 0 ? mesh_.he[std::size_t(s.halfedge)].twin : Index(-1);
     return {s.face, tw >= 0 ? Mesh::face_of(tw) : s.face};
   }
 
@@ -288,7 +288,7 @@ protected:
       if(b[std::size_t(k)] == FT(0))
         ++zeros;
     if(zeros == 1) {
-      const Index tw = mesh_.he_twin[std::size_t(halfedge_of_edge_point(f, b))];
+      const Index tw = mesh_.he[std::size_t(halfedge_of_edge_point(f, b))].twin;
       if(tw >= 0)
         faces[1] = Mesh::face_of(tw);
     }
@@ -403,8 +403,8 @@ protected:
     const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
     neighbour_begin_.assign(nv + 1, 0);
     for(std::size_t h = 0; h < nh; ++h) {
-      ++neighbour_begin_[std::size_t(mesh_.he_source[h]) + 1];
-      if(mesh_.he_twin[h] < 0)
+      ++neighbour_begin_[std::size_t(mesh_.he[h].source) + 1];
+      if(mesh_.he[h].twin < 0)
         ++neighbour_begin_[std::size_t(mesh_.target(Index(h))) + 1];
     }
     for(std::size_t v = 0; v < nv; ++v)
@@ -413,9 +413,9 @@ protected:
     std::vector<Index> fill(neighbour_begin_.begin(), neighbour_begin_.end() - 1);
     for(std::size_t h = 0; h < nh; ++h) {
       const Index a = mesh_.source(Index(h)), c = mesh_.target(Index(h));
-      neighbours_[std::size_t(fill[std::size_t(a)]++)] = Neighbour{c, mesh_.he_length[h]};
-      if(mesh_.he_twin[h] < 0)
-        neighbours_[std::size_t(fill[std::size_t(c)]++)] = Neighbour{a, mesh_.he_length[h]};
+      neighbours_[std::size_t(fill[std::size_t(a)]++)] = Neighbour{c, mesh_.he[h].length};
+      if(mesh_.he[h].twin < 0)
+        neighbours_[std::size_t(fill[std::size_t(c)]++)] = Neighbour{a, mesh_.he[h].length};
     }
   }
 

@@ -169,10 +169,10 @@ public:
       while(b[(k + 2) % 3] != FT(0))
         ++k;
       const Index g = 3 * f + k;         // the halfedge carrying the point (corners k and k+1)
-      const FT len = mesh_.he_length[g];
+      const FT len = mesh_.he[g].length;
       const FT t = b[(k + 1) % 3] * len;
       insert_piece_no_propagation(g, FT(0), len, t, FT(0), FT(0), id);
-      const Index tw = mesh_.he_twin[g];
+      const Index tw = mesh_.he[g].twin;
       if(tw >= 0) {
         const Index f2 = Mesh::face_of(tw);
         std::array<FT, 3> b2 = {FT(0), FT(0), FT(0)};
@@ -240,7 +240,7 @@ public:
           release_interval_ = mesh_.number_of_edges / 2 + live_windows_ + 1024;
         }
         if((++pops & 0xFFFF) == 0) {
-          if(!progress(stage, fraction_final(top.key)))
+          if(!MDCS::internal::Reports_nothing<Progress>::value && !progress(stage, fraction_final(top.key)))
             throw MDCS::Operation_cancelled(stage);
         }
       }
@@ -317,7 +317,7 @@ private:
     Index wi = edge_first_[e];
     if(wi < 0 || edge_closed_[e])
       return FT(-1);
-    const FT L = mesh_.he_length[std::size_t(mesh_.edge_halfedge[e])];
+    const FT L = mesh_.he[std::size_t(mesh_.edge_halfedge[e])].length;
     // gaps up to `tiny` do not count: insert_piece drops pieces that narrow
     const FT tiny = relative_tolerance_ * L;
     FT covered = FT(0), bound = FT(0);
@@ -451,11 +451,11 @@ private:
     for(Index k = star_begin_[std::size_t(v)]; k < star_begin_[std::size_t(v) + 1]; ++k) {
       const Index h = star_[std::size_t(k)];  // source(h) == v
       const Index g = Mesh::next(h);          // the edge opposite v in the face of h
-      const auto& p = mesh_.he_opposite[std::size_t(g)];
-      insert_piece(g, FT(0), mesh_.he_length[std::size_t(g)], p.x, p.y, d, id);
-      insert_piece_no_propagation(h, FT(0), mesh_.he_length[std::size_t(h)], FT(0), FT(0), d, id);
+      const auto& p = mesh_.he[std::size_t(g)].opposite;
+      insert_piece(g, FT(0), mesh_.he[std::size_t(g)].length, p.x, p.y, d, id);
+      insert_piece_no_propagation(h, FT(0), mesh_.he[std::size_t(h)].length, FT(0), FT(0), d, id);
       const Index hp = Mesh::prev(h);
-      insert_piece_no_propagation(hp, FT(0), mesh_.he_length[std::size_t(hp)], mesh_.he_length[std::size_t(hp)],
+      insert_piece_no_propagation(hp, FT(0), mesh_.he[std::size_t(hp)].length, mesh_.he[std::size_t(hp)].length,
                                   FT(0), d, id);
     }
   }
@@ -470,7 +470,7 @@ private:
       update_vertex(mesh_.source(g), distance_2(FT(0), FT(0), p.x, p.y), id);
       if(b[std::size_t((k + 2) % 3)] == FT(0))
         continue; // the point is on this edge: handled by the caller
-      insert_piece(g, FT(0), mesh_.he_length[std::size_t(g)], p.x, p.y, FT(0), id);
+      insert_piece(g, FT(0), mesh_.he[std::size_t(g)].length, p.x, p.y, FT(0), id);
     }
   }
 
@@ -486,8 +486,8 @@ private:
     const Index prev_w = w.prev, next_w = w.next;
     const Index edge = w.edge;
     const bool canonical = (h == mesh_.edge_halfedge[std::size_t(edge)]);
-    const FT L = mesh_.he_length[std::size_t(h)];
-    const Point_2_ft<FT> c = mesh_.he_opposite[std::size_t(h)];
+    const FT L = mesh_.he[std::size_t(h)].length;
+    const Point_2_ft<FT> c = mesh_.he[std::size_t(h)].opposite;
     const Index va = mesh_.source(h), vb = mesh_.target(h), vc = mesh_.opposite_vertex(h);
 
     // Xin-Wang filter, as trimming: the part of the window that A (along the edge), B (along the edge)
@@ -598,7 +598,7 @@ private:
                    const FT& x0, bool reversed)
   {
     const Local_window<FT>& w = pd.w;
-    const FT len = mesh_.he_length[std::size_t(g)];
+    const FT len = mesh_.he[std::size_t(g)].length;
     const FT x1 = pd.xc;
     // u where the crossing equals b (clamped to [0,1]); crossings run monotonically from x0 to x1.
     auto u_at = [&](const FT& b) -> FT {
@@ -650,7 +650,7 @@ private:
                 bool reversed, const FT& ua, const FT& ub, const FT& qx, const FT& qy, const FT& sigma)
   {
     using std::sqrt;
-    const FT len = mesh_.he_length[std::size_t(g)];
+    const FT len = mesh_.he[std::size_t(g)].length;
     // g runs from O to T: for the edge C->A, O = C and T = A = P; for B->C, O = B = P and T = C.
     const FT ox = reversed ? c.x : px, oy = reversed ? c.y : py;
     const FT tx = reversed ? px : c.x, ty = reversed ? py : c.y;

@@ -92,10 +92,10 @@ public:
       for(Index k = star_begin_[vi]; k < send; ++k) {
         const Index h = star_[std::size_t(k)];
         const Index c1 = Mesh::next(h), c2 = Mesh::prev(h);
-        const Index v1 = m.he_source[std::size_t(c1)], v2 = m.he_source[std::size_t(c2)];
+        const Index v1 = m.he[std::size_t(c1)].source, v2 = m.he[std::size_t(c2)].source;
         // one-sided updates along the edges v -> v1 (halfedge h) and v2 -> v (halfedge c2)
-        this->lower(v1, key + m.he_length[std::size_t(h)], src, v);
-        this->lower(v2, key + m.he_length[std::size_t(c2)], src, v);
+        this->lower(v1, key + m.he[std::size_t(h)].length, src, v);
+        this->lower(v2, key + m.he[std::size_t(c2)].length, src, v);
         // two-point updates: at corner c1 the supports are (A, B) = (v2, v), at corner c2 they are (v, v1)
         const std::array<FT, 3>& q1 = corner_q_[std::size_t(c1)];
         if(q1[0] > FT(0))
@@ -252,13 +252,13 @@ private:
     std::vector<Virtual_triangle> virtuals;
     for(std::size_t ci = 0; ci < nh; ++ci) {
       const Index c = Index(ci);
-      const Index C = m.he_source[ci];
+      const Index C = m.he[ci].source;
       const Index h = Mesh::next(c); // A -> B, opposite to C
       const Index A = m.source(h), B = m.target(h);
       if(A == C || B == C || A == B)
         continue;
-      const FT L = m.he_length[std::size_t(h)];
-      const Point_2_ft<FT>& cp = m.he_opposite[std::size_t(h)];
+      const FT L = m.he[std::size_t(h)].length;
+      const Point_2_ft<FT>& cp = m.he[std::size_t(h)].opposite;
       const Vec2 a{-cp.x, -cp.y}, b{L - cp.x, -cp.y};
       std::array<FT, 3> q;
       if(inverse_gram(a, b, q))
@@ -302,10 +302,10 @@ private:
     const Mesh& m = this->mesh_;
     // the acute sub-sector lies between lo (perpendicular to CB, on the A side) and hi (perpendicular to CA)
     const Vec2 lo{b.y, -b.x}, hi{-a.y, a.x};
-    Vec2 U{FT(0), FT(0)}, W{m.he_length[std::size_t(h)], FT(0)};
+    Vec2 U{FT(0), FT(0)}, W{m.he[std::size_t(h)].length, FT(0)};
     Index g = h; // U -> W, the near face on its left
     for(int step = 0; step < max_unfoldings; ++step) {
-      const Index t = m.he_twin[std::size_t(g)];
+      const Index t = m.he[std::size_t(g)].twin;
       if(t < 0)
         return false;
       const Vec2 ex{U.x - W.x, U.y - W.y};
@@ -313,7 +313,7 @@ private:
       if(!(len > FT(0)))
         return false;
       const Vec2 e{ex.x / len, ex.y / len}, r{-e.y, e.x};
-      const Point_2_ft<FT>& o = m.he_opposite[std::size_t(t)]; // in t's frame: W at the origin, U on the x axis
+      const Point_2_ft<FT>& o = m.he[std::size_t(t)].opposite; // in t's frame: W at the origin, U on the x axis
       const Vec2 P{W.x + o.x * e.x + o.y * r.x, W.y + o.x * e.y + o.y * r.y};
       const Vec2 p{P.x - c.x, P.y - c.y};
       if(cross(lo, p) < FT(0)) {

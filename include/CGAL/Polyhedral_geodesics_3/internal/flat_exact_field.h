@@ -63,9 +63,8 @@ public:
     std::size_t stuck_restarts = 0;     // restarts through an edge with one unreached vertex (pinched vertices)
   };
 
-  explicit Flat_exact_field(const Mesh& mesh) : mesh_(mesh)
+  explicit Flat_exact_field(const Mesh& mesh) : mesh_(mesh), he_(mesh.he)
   {
-    build_halfedge_data();
     unreached_ = FT(std::numeric_limits<double>::max() / 16);
     if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
       epsilon_ = FT(std::numeric_limits<FT>::epsilon());
@@ -235,34 +234,24 @@ protected:
     for(std::size_t v = 0; v < nv; ++v)
       vedge_begin_[v + 1] += vedge_begin_[v];
     vedge_.resize(std::size_t(vedge_begin_[nv]));
+    vedge_other_.resize(std::size_t(vedge_begin_[nv]));
     std::vector<Index> fill(vedge_begin_.begin(), vedge_begin_.end() - 1);
     for(std::size_t e = 0; e < ne; ++e) {
       const Index h = mesh_.edge_halfedge[e];
       const Index a = he_source(h), b = he_target(h);
-      vedge_[std::size_t(fill[std::size_t(a)]++)] = Index(e);
-      if(b != a)
-        vedge_[std::size_t(fill[std::size_t(b)]++)] = Index(e);
+      const std::size_t ka = std::size_t(fill[std::size_t(a)]++);
+      vedge_[ka] = Index(e);
+      vedge_other_[ka] = b;
+      if(b != a) {
+        const std::size_t kb = std::size_t(fill[std::size_t(b)]++);
+        vedge_[kb] = Index(e);
+        vedge_other_[kb] = a;
+      }
     }
   }
 
-  // The mesh's data per halfedge, packed for the propagation (a face's three halfedges in 120 contiguous bytes
-  // instead of five arrays; in huge pages, so that the copy costs few page faults).
-  struct Halfedge_data
-  {
-    Point_2_ft<FT> opposite; // the opposite corner in the halfedge's frame
-    FT length;
-    Index source, twin, edge;
-  };
-
-  void build_halfedge_data()
-  {
-    const std::size_t nh = 3 * mesh_.number_of_faces;
-    he_.clear();
-    he_.reserve(nh);
-    for(std::size_t h = 0; h < nh; ++h)
-      he_.push_back(Halfedge_data{mesh_.he_opposite[h], mesh_.he_length[h], mesh_.he_source[h], mesh_.he_twin[h],
-                                  mesh_.he_edge[h]});
-  }
+  // The mesh's packed data per halfedge (he_[h].length, .opposite, .source, .twin, .edge).
+  typedef Geodesic_halfedge<FT> Halfedge_data;
 
   Index he_source(Index h) const { return he_[std::size_t(h)].source; }
   Index he_target(Index h) const { return he_[std::size_t(Mesh::next(h))].source; }
@@ -551,7 +540,8 @@ protected:
   Large_vector<Index> child_next_, child_prev_; // the list of the vertices updated from the same edge
   Large_vector<Index> vedge_begin_;
   Large_vector<Index> vedge_;                // the edges around each vertex
-  Large_vector<Halfedge_data> he_;          // per halfedge: he_[h].length, .opposite, .source, .twin, .edge
+  Large_vector<Index> vedge_other_;          // and their other ends (an edge waits for both ends: checked first)
+  const Large_vector<Halfedge_data>& he_;   // the mesh's halfedges: he_[h].length, .opposite, .source, .twin, .edge
   // per edge
   Large_vector<Index> child_head_;           // first vertex updated from the edge
   // side links, built with the first path query (mutable: a cache)

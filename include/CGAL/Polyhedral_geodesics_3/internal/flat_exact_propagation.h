@@ -150,7 +150,7 @@ public:
         ++counters_.edges_propagated;
         if(++pops >= next_report) {
           next_report = pops + report_every;
-          if(!progress(stage, fraction_final(top.key)))
+          if(!MDCS::internal::Reports_nothing<Progress>::value && !progress(stage, fraction_final(top.key)))
             throw MDCS::Operation_cancelled(stage);
         }
       }
@@ -231,6 +231,7 @@ private:
   using Base::unreached_;
   using Base::vedge_;
   using Base::vedge_begin_;
+  using Base::vedge_other_;
   using Base::vertex_is_pseudo_source_;
   using Base::vertex_sources_;
   using Base::vertex_windows_;
@@ -579,8 +580,10 @@ private:
     }
     set_vertex(v, value, source, h, kind, sigma, root);
     ++stats_.vertex_updates;
+    // the edges around v whose other end is reached (an edge with an unreached end is not queued: push_edge())
     for(Index k = vedge_begin_[std::size_t(v)]; k < vedge_begin_[std::size_t(v) + 1]; ++k)
-      push_edge(vedge_[std::size_t(k)]);
+      if(reached(vedge_other_[std::size_t(k)]))
+        push_edge(vedge_[std::size_t(k)]);
     return true;
   }
 
@@ -688,10 +691,11 @@ private:
 
   void note_memory()
   {
-    // the propagation's arrays (the side links of the paths come on top: 5 bytes per edge)
+    // the propagation's arrays, without the compact mesh (the side links of the paths come on top: 5 bytes per
+    // edge)
     const std::size_t nv = mesh_.number_of_vertices, ne = mesh_.number_of_edges;
     std::size_t bytes = nv * (2 * sizeof(FT) + 7 * sizeof(Index) + 2 + 3 * sizeof(std::uint32_t)) +
-                        ne * 2 * sizeof(Index) + he_.size() * sizeof(Halfedge_data) + vedge_.size() * sizeof(Index) +
+                        ne * 2 * sizeof(Index) + 2 * vedge_.size() * sizeof(Index) +
                         peak_heap_ * sizeof(Heap_entry) + stack_.capacity() * sizeof(Index);
     if(bytes > stats_.peak_memory_bytes)
       stats_.peak_memory_bytes = bytes;

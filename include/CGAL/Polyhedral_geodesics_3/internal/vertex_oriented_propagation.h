@@ -79,7 +79,7 @@ public:
       lobe_vertex_[v] = pseudo_source_[v] &&
                         !(to_double_value(mesh_.vertex_angle_sum[v]) > (mesh_.vertex_on_boundary[v] ? 1 : 2) * pi + 1e-9);
     for(std::size_t h = 0; h < nh; ++h)
-      if(mesh_.he_length[h] == FT(0) || !(mesh_.he_opposite[h].y > FT(0))) {
+      if(mesh_.he[h].length == FT(0) || !(mesh_.he[h].opposite.y > FT(0))) {
         pseudo_source_[std::size_t(mesh_.source(Index(h)))] = pseudo_source_[std::size_t(mesh_.target(Index(h)))] = 1;
         lobe_vertex_[std::size_t(mesh_.source(Index(h)))] = lobe_vertex_[std::size_t(mesh_.target(Index(h)))] = 0;
       }
@@ -144,7 +144,7 @@ public:
       while(b[std::size_t((k + 2) % 3)] != FT(0))
         ++k;
       const Index g = 3 * f + k;
-      const Index tw = mesh_.he_twin[std::size_t(g)];
+      const Index tw = mesh_.he[std::size_t(g)].twin;
       if(tw >= 0) {
         std::array<FT, 3> b2 = {FT(0), FT(0), FT(0)};
         b2[std::size_t(tw % 3)] = b[std::size_t((k + 1) % 3)];       // source(tw) == target(g)
@@ -273,15 +273,15 @@ private:
     const Index id = vertex_source_[std::size_t(v)];
     for(Index k = star_begin_[std::size_t(v)]; k < star_begin_[std::size_t(v) + 1]; ++k) {
       const Index h = star_[std::size_t(k)]; // source(h) == v
-      update_vertex(mesh_.target(h), d + mesh_.he_length[std::size_t(h)], id);
+      update_vertex(mesh_.target(h), d + mesh_.he[std::size_t(h)].length, id);
       const Index hp = Mesh::prev(h);
-      update_vertex(mesh_.source(hp), d + mesh_.he_length[std::size_t(hp)], id);
+      update_vertex(mesh_.source(hp), d + mesh_.he[std::size_t(hp)].length, id);
       const Index g = Mesh::next(h);         // the edge opposite v in the face of h
-      const Index t = mesh_.he_twin[std::size_t(g)];
+      const Index t = mesh_.he[std::size_t(g)].twin;
       if(t < 0)
         continue;
-      const FT L = mesh_.he_length[std::size_t(g)];
-      const Point_2_ft<FT>& p = mesh_.he_opposite[std::size_t(g)]; // v in g's frame
+      const FT L = mesh_.he[std::size_t(g)].length;
+      const Point_2_ft<FT>& p = mesh_.he[std::size_t(g)].opposite; // v in g's frame
       add_window(t, FT(0), L, L - p.x, -p.y, d, id, lobe_vertex_[std::size_t(v)] && !is_source_[std::size_t(v)]);
     }
   }
@@ -290,15 +290,15 @@ private:
   {
     for(int k = 0; k < 3; ++k) {
       const Index g = 3 * f + k;
-      const FT L = mesh_.he_length[std::size_t(g)];
-      const Point_2_ft<FT>& c = mesh_.he_opposite[std::size_t(g)];
+      const FT L = mesh_.he[std::size_t(g)].length;
+      const Point_2_ft<FT>& c = mesh_.he[std::size_t(g)].opposite;
       // the point in g's frame: corners source(g) = k at (0,0), target(g) = k+1 at (L,0), k+2 at c
       const FT px = b[std::size_t((k + 1) % 3)] * L + b[std::size_t((k + 2) % 3)] * c.x;
       const FT py = b[std::size_t((k + 2) % 3)] * c.y;
       update_vertex(mesh_.source(g), distance_2(FT(0), FT(0), px, py), id);
       if(b[std::size_t((k + 2) % 3)] == FT(0))
         continue; // on this edge: its other side is a face source of its own (see add_face_source)
-      const Index t = mesh_.he_twin[std::size_t(g)];
+      const Index t = mesh_.he[std::size_t(g)].twin;
       if(t >= 0)
         add_window(t, FT(0), L, L - px, -py, FT(0), id, false);
     }
@@ -456,7 +456,7 @@ private:
       batch_.push_back(wi);
     head_[std::size_t(g)] = -1;
 
-    const FT L = mesh_.he_length[std::size_t(g)];
+    const FT L = mesh_.he[std::size_t(g)].length;
     const Index va = mesh_.source(g), vb = mesh_.target(g), vc = mesh_.opposite_vertex(g);
     if(L == FT(0)) {
       // A zero-length edge is one point, an end point of both ends: the pseudo-source expansion of those
@@ -470,7 +470,7 @@ private:
       }
       return;
     }
-    const Point_2_ft<FT> c = mesh_.he_opposite[std::size_t(g)];
+    const Point_2_ft<FT> c = mesh_.he[std::size_t(g)].opposite;
     const FT tiny = relative_tolerance_ * L;
 
     // 1. The ends on the vertices, and the trimming by the three vertices of the face.
@@ -564,8 +564,8 @@ private:
     // 4. Children: rays through [b0, min(xc, split)] reach the edge A-C, rays through [max(xc, split), b1]
     //    the edge B-C (only the parts on the side of the split that the rays reach are useful).
     const Index h_ca = Mesh::prev(g), h_bc = Mesh::next(g);
-    const Index t_ac = mesh_.he_twin[std::size_t(h_ca)], t_bc = mesh_.he_twin[std::size_t(h_bc)];
-    const FT len_ac = mesh_.he_length[std::size_t(h_ca)], len_bc = mesh_.he_length[std::size_t(h_bc)];
+    const Index t_ac = mesh_.he[std::size_t(h_ca)].twin, t_bc = mesh_.he[std::size_t(h_bc)].twin;
+    const FT len_ac = mesh_.he[std::size_t(h_ca)].length, len_bc = mesh_.he[std::size_t(h_bc)].length;
     // the frames of the targets: t_ac has A at the origin and C at (len_ac, 0); t_bc has C at the origin and
     // B at (len_bc, 0); the face of g is below both
     const bool to_ac = t_ac >= 0 && len_ac > FT(0), to_bc = t_bc >= 0 && len_bc > FT(0);

@@ -182,7 +182,7 @@ protected:
   // frame of halfedge g, into the lower envelope of g's edge. It propagates into the face of g's twin.
   void insert_piece(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source)
   {
-    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, mesh_.he_twin[std::size_t(g)]);
+    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, mesh_.he[std::size_t(g)].twin);
   }
 
   void insert_piece_no_propagation(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source)
@@ -192,9 +192,9 @@ protected:
 
   void insert_piece_impl(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source, Index into)
   {
-    const Index e = mesh_.he_edge[std::size_t(g)];
+    const Index e = mesh_.he[std::size_t(g)].edge;
     const Index hc = mesh_.edge_halfedge[std::size_t(e)];
-    const FT L = mesh_.he_length[std::size_t(g)];
+    const FT L = mesh_.he[std::size_t(g)].length;
     if(g != hc) {
       const FT n0 = L - t1, n1 = L - t0;
       t0 = n0;

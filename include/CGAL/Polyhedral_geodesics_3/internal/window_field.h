@@ -78,7 +78,7 @@ public:
       const Field_window& w = field_windows_[std::size_t(first + k)];
       const std::uint32_t tag = field_tags_[std::size_t(first + k)];
       const std::uint32_t side = tag & 3u;
-      const Index into = side == 0 ? h : (side == 1 ? mesh_.he_twin[std::size_t(h)] : Index(-1));
+      const Index into = side == 0 ? h : (side == 1 ? mesh_.he[std::size_t(h)].twin : Index(-1));
       f(Field_window_view{w.b0, w.b1, w.sx, w.sy, w.sigma, into, Index(tag >> 2) - 1});
     }
   }
@@ -136,7 +136,7 @@ public:
       Candidate best;
       for(const auto& inc : where) {
         Candidate c = best_candidate_in_face(inc.first, inc.second, at_vertex,
-                                             on_halfedge < 0 ? -1 : mesh_.he_edge[std::size_t(on_halfedge)], &visited);
+                                             on_halfedge < 0 ? -1 : mesh_.he[std::size_t(on_halfedge)].edge, &visited);
         if(c.kind != Candidate::NONE && (best.kind == Candidate::NONE || c.value < best.value))
           best = c;
       }
@@ -155,7 +155,7 @@ public:
         break;
       case Candidate::EDGE_POINT: {
         const Index g = best.halfedge;
-        const FT len = mesh_.he_length[std::size_t(g)];
+        const FT len = mesh_.he[std::size_t(g)].length;
         const FT t = best.t;
         if(!(t > FT(0))) {
           at_vertex = mesh_.source(g);
@@ -173,7 +173,7 @@ public:
           at_vertex = -1;
           on_halfedge = g;
           {
-            const Index e = mesh_.he_edge[std::size_t(g)];
+            const Index e = mesh_.he[std::size_t(g)].edge;
             visited.add_edge_point(e, g == mesh_.edge_halfedge[std::size_t(e)] ? t : len - t);
           }
           const FT r = t / len;
@@ -210,7 +210,7 @@ protected:
   {
     if(h_is_canonical)
       return Local_window<FT>{b0, b1, sx, sy, sigma};
-    const FT L = mesh_.he_length[std::size_t(h)];
+    const FT L = mesh_.he[std::size_t(h)].length;
     return Local_window<FT>{L - b1, L - b0, L - sx, -sy, sigma};
   }
 
@@ -289,8 +289,8 @@ protected:
   Point_2_ft<FT> point_in_halfedge_frame(Index f, const std::array<FT, 3>& b, int k) const
   {
     const Index g = 3 * f + k;
-    const auto& o = mesh_.he_opposite[std::size_t(g)];
-    const FT len = mesh_.he_length[std::size_t(g)];
+    const auto& o = mesh_.he[std::size_t(g)].opposite;
+    const FT len = mesh_.he[std::size_t(g)].length;
     const FT wt = b[std::size_t((k + 1) % 3)], wo = b[std::size_t((k + 2) % 3)];
     return Point_2_ft<FT>{wt * len + wo * o.x, wo * o.y};
   }
@@ -337,11 +337,11 @@ protected:
       if(c.kind == Candidate::VERTEX)
         v = c.vertex;
       else if(c.kind == Candidate::EDGE_POINT) {
-        const FT len = mesh.he_length[std::size_t(c.halfedge)];
+        const FT len = mesh.he[std::size_t(c.halfedge)].length;
         if(!(c.t > FT(0))) v = mesh.source(c.halfedge);
         else if(!(c.t < len)) v = mesh.target(c.halfedge);
         else {
-          const Index e = mesh.he_edge[std::size_t(c.halfedge)];
+          const Index e = mesh.he[std::size_t(c.halfedge)].edge;
           const FT x = c.halfedge == mesh.edge_halfedge[std::size_t(e)] ? c.t : len - c.t;
           const FT tol = FT(1e-12) * len;
           for(const auto& p : edge_points)
@@ -400,7 +400,7 @@ protected:
       return best;
     for(int k = 0; k < 3; ++k) {
       const Index g = 3 * f + k;
-      const Index e = mesh_.he_edge[std::size_t(g)];
+      const Index e = mesh_.he[std::size_t(g)].edge;
       if(e == skip_edge)
         continue;
       const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, k);
@@ -449,7 +449,7 @@ protected:
   // the current point of a path (the step would not move).
   bool snap_to_end(Index g, FT& x, Index skip_vertex) const
   {
-    const FT len = mesh_.he_length[std::size_t(g)];
+    const FT len = mesh_.he[std::size_t(g)].length;
     const FT tol = FT(1e-12) * len;
     if(!(x > tol)) {
       x = FT(0);
@@ -471,8 +471,8 @@ protected:
       for(Index k = star_begin_[std::size_t(u)]; k < star_begin_[std::size_t(u) + 1]; ++k) {
         const Index h = star_[std::size_t(k)];
         const Index hp = Mesh::prev(h);
-        const Index candidates[2] = {mesh_.he_length[std::size_t(h)] == FT(0) ? mesh_.target(h) : Index(-1),
-                                     mesh_.he_length[std::size_t(hp)] == FT(0) ? mesh_.source(hp) : Index(-1)};
+        const Index candidates[2] = {mesh_.he[std::size_t(h)].length == FT(0) ? mesh_.target(h) : Index(-1),
+                                     mesh_.he[std::size_t(hp)].length == FT(0) ? mesh_.source(hp) : Index(-1)};
         for(Index w : candidates)
           if(w >= 0 && std::find(cluster.begin(), cluster.end(), w) == cluster.end())
             cluster.push_back(w);
@@ -498,7 +498,7 @@ protected:
   // Adds the point at ratio r along halfedge g, seen from the face of g's twin.
   void add_twin_incarnation(Index g, const FT& r, std::vector<std::pair<Index, std::array<FT, 3>>>& where) const
   {
-    const Index tw = mesh_.he_twin[std::size_t(g)];
+    const Index tw = mesh_.he[std::size_t(g)].twin;
     if(tw < 0)
       return;
     std::array<FT, 3> b = {FT(0), FT(0), FT(0)};
