@@ -6,9 +6,9 @@
 //    that are flat, convex cones and saddles;
 //  - on a planar grid: 2 pi inside, pi on the sides, pi / 2 or pi at the corners, and the saddle test of the
 //    engines (is_saddle_or_boundary_vertex) where it matters;
-//  - the packed halfedge records (one pass over the halfedges fills twins, edges, lengths, frames and the vertex
-//    data), checked against the original mesh on Surface_mesh and Polyhedron_3, closed and with boundary, and on
-//    a mesh whose faces were removed and re-added (faces not in the order of their halfedges).
+//  - the packed halfedge records (twins, edges, lengths, frames) and the vertex data, checked against the
+//    original mesh on Surface_mesh and Polyhedron_3, closed and with boundary, and on a mesh whose faces were
+//    removed and re-added (faces not in the order of their halfedges).
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>

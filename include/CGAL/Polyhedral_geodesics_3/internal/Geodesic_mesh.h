@@ -7,7 +7,7 @@
 // its own planar frame, the position of the opposite corner. Building it once makes the propagation
 // independent of the FaceGraph model (Surface_mesh, Polyhedron_3 with or without ids, OpenMesh) and
 // keeps the per-window work on contiguous arrays. The data of a halfedge is one packed record, which every
-// engine reads in place, and the records are filled in a single pass over the halfedges.
+// engine reads in place; each record is written once, in order, after passes over small temporary arrays.
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_MESH_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_MESH_H

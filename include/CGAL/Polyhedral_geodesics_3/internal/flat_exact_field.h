@@ -257,12 +257,6 @@ protected:
   Index he_target(Index h) const { return he_[std::size_t(Mesh::next(h))].source; }
   Index he_opposite_vertex(Index h) const { return he_[std::size_t(Mesh::prev(h))].source; }
 
-  Index other_end(Index e, Index v) const
-  {
-    const Index h = mesh_.edge_halfedge[std::size_t(e)];
-    return he_source(h) == v ? he_target(h) : he_source(h);
-  }
-
   bool reached(Index v) const { return vs_[std::size_t(v)].dist < unreached_; }
 
   // The relative amount by which a new value must beat the distance of v. A vertex's first three values only

@@ -211,7 +211,6 @@ private:
   using Base::length_2;
   using Base::limit_;
   using Base::mesh_;
-  using Base::other_end;
   using Base::parent_edge;
   using Base::parent_he_;
   using Base::parent_kind_;
@@ -514,7 +513,7 @@ private:
     for(const Vertex_source& s : vertex_sources_)
       for(Index k = vedge_begin_[std::size_t(s.vertex)]; k < vedge_begin_[std::size_t(s.vertex) + 1]; ++k) {
         const Index e = vedge_[std::size_t(k)];
-        const Index w = other_end(e, s.vertex);
+        const Index w = vedge_other_[std::size_t(k)];
         try_lower(w, vs_[std::size_t(s.vertex)].dist + he_[std::size_t(mesh_.edge_halfedge[std::size_t(e)])].length,
                   mesh_.edge_halfedge[std::size_t(e)], EDGE_NEIGHBOR, vs_[std::size_t(s.vertex)].source,
                   vs_[std::size_t(s.vertex)].dist, s.vertex);
