@@ -33,7 +33,8 @@ namespace Polyhedral_geodesics_3 {
   edge, otherwise the distance along one of the two other edges of the face. A vertex whose distance is
   lowered queues the edges around it again. One refinement keeps the planar exactness and helps around holes:
   behind a saddle vertex or a reflex boundary vertex (a hole's corner) the pseudo-sources are rebuilt with the
-  offset of that vertex, so that the distance there is measured from the corner.
+  offset of that vertex, so that the distance there is measured from the corner; where two such windows meet
+  on an edge, the smaller of their offsets is used (the flatter of the two fronts).
 
   The propagation maintains a *dependence DAG* (thesis, 4.2.1 and 4.3.2) whose nodes are the edges: the edge a
   vertex was lowered from is a parent of every edge around that vertex, and an edge has as further parents

@@ -13,7 +13,8 @@
 //   saddle vertex or a reflex boundary vertex r (where shortest paths bend) starts a *window* rooted at r with
 //   offset D(r), and an edge whose two ends belong to the same window (or whose end is the root of the other
 //   end's window) rebuilds its pseudo-source with that offset: behind a hole's corner the pseudo-source is the
-//   corner itself. Where two windows meet, the zero offset of the thesis is used.
+//   corner itself. Where two windows meet, the smaller of the two offsets is used (the flatter front; the
+//   thesis's zero offset there made every vertex downstream of a meeting flat-fronted).
 // - An edge propagates into each of its faces: the opposite vertex v3 gets D(s) at v3 when it sees s through the
 //   edge (the quadrilateral s, v1, v3, v2 is convex), else min(D(v1) + |v1 v3|, D(v2) + |v2 v3|). When a vertex
 //   is lowered, the edges around it get their new distance function and are (re)queued in an indexed binary
