@@ -243,14 +243,8 @@ int main(int argc, char** argv)
     {"bunny00-loop1", o.in_mesh_dir("bunny00.off"), 1},
     {"bunny00-loop2", o.in_mesh_dir("bunny00.off"), 2}};
   std::vector<Mesh_spec> specs;
-  if(!select_meshes(builtin, o, specs)) {
-    usage();
-    return 2;
-  }
-  if(o.list_only) {
-    print_mesh_list(specs);
-    return 0;
-  }
+  if(const int exit_code = select_or_list_meshes(builtin, o, specs, usage); exit_code >= 0)
+    return exit_code;
 
   // ---- the methods, in the columns' order
   std::vector<Method> methods;

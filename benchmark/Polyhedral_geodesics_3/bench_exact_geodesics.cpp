@@ -317,14 +317,8 @@ int main(int argc, char** argv)
     {"armadillo-loop1", o.in_mesh_dir("armadillo.off"), 1},            {"bunny00-loop1", o.in_mesh_dir("bunny00.off"), 1},
     {"bunny00-loop2", o.in_mesh_dir("bunny00.off"), 2}};
   std::vector<Mesh_spec> specs;
-  if(!select_meshes(builtin, o, specs)) {
-    usage();
-    return 2;
-  }
-  if(o.list_only) {
-    print_mesh_list(specs);
-    return 0;
-  }
+  if(const int exit_code = select_or_list_meshes(builtin, o, specs, usage); exit_code >= 0)
+    return exit_code;
 
   const double mem_total_budget = o.memory_allowance_mib();
   std::cout << "Exact geodesic distances from 1 and 10 source vertices to all vertices.\n"

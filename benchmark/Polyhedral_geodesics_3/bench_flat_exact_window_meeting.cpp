@@ -91,14 +91,8 @@ int main(int argc, char** argv)
     builtin.push_back({name, o.in_mesh_dir(std::string(name) + ".off"), 0});
   builtin.push_back({"mannequin-devil-loop1", o.in_mesh_dir("mannequin-devil.off"), 1});
   std::vector<Mesh_spec> specs;
-  if(!select_meshes(builtin, o, specs)) {
-    usage();
-    return 2;
-  }
-  if(o.list_only) {
-    print_mesh_list(specs);
-    return 0;
-  }
+  if(const int exit_code = select_or_list_meshes(builtin, o, specs, usage); exit_code >= 0)
+    return exit_code;
 
   std::cout << "Flat-exact where two windows meet on an edge: the smaller offset (default) against the thesis's zero\n"
             << "offset. " << sources << " random source vertices per mesh (seed " << seed << "); E = mean relative error\n"

@@ -393,6 +393,23 @@ inline void print_mesh_list(const std::vector<Mesh_spec>& specs)
     std::cout << s.name << "  " << s.file << (s.loop_steps ? "  + Loop x" + std::to_string(s.loop_steps) : "") << "\n";
 }
 
+// select_meshes(), then --list: returns -1 when the program goes on with `specs`, else its exit code (0 after
+// printing the list, 2 after `usage()` for an unknown mesh name).
+template <class Usage>
+int select_or_list_meshes(const std::vector<Mesh_spec>& builtin, const Common_options& o, std::vector<Mesh_spec>& specs,
+                          Usage usage)
+{
+  if(!select_meshes(builtin, o, specs)) {
+    usage();
+    return 2;
+  }
+  if(o.list_only) {
+    print_mesh_list(specs);
+    return 0;
+  }
+  return -1;
+}
+
 // Writes `table` as CSV to `csv` (parent folders created) and says so.
 inline void write_table_csv(const mdcs_bench::Table& table, const std::string& csv)
 {

@@ -321,8 +321,8 @@ protected:
   // Else two windows meet on the edge, and the offset is the smaller of the two ends' offsets, with no root: of
   // the two real fronts the flatter one (a larger radius d - sigma), so the rebuilt front is never more curved
   // than both. The thesis's zero offset here made every vertex downstream of a meeting flat-fronted (a child
-  // inherits the edge's offset), which overestimates ahead of the edge; the smaller offset lowered E on 27 of
-  // 28 meshes (the geodesics manual, *Where two windows meet*). Without vertex windows every offset is 0, the
+  // inherits the edge's offset), which overestimates ahead of the edge; the smaller offset lowered E on 28 of
+  // 30 meshes (the geodesics manual, *Where two windows meet*). Without vertex windows every offset is 0, the
   // thesis's rule. The thesis's zero offset here stays available (set_window_meeting()).
   void edge_window(Index a, Index b, FT& sigma, Index& root) const
   {
