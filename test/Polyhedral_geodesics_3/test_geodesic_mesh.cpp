@@ -7,8 +7,10 @@
 //  - on a planar grid: 2 pi inside, pi on the sides, pi / 2 or pi at the corners, and the saddle test of the
 //    engines (is_saddle_or_boundary_vertex) where it matters;
 //  - the packed halfedge records (twins, edges, lengths, frames) and the vertex data, checked against the
-//    original mesh on Surface_mesh and Polyhedron_3, closed and with boundary, and on a mesh whose faces were
-//    removed and re-added (faces not in the order of their halfedges).
+//    original mesh on Surface_mesh and Polyhedron_3 (with and without ids), closed and with boundary, and on a
+//    mesh whose faces were removed and re-added (faces not in the order of their halfedges);
+//  - the twins by the halfedge index (models that have one) against the walk around the opposite face;
+//  - a Surface_mesh with removed faces whose garbage is not collected is refused with a clear message.
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
@@ -18,6 +20,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -37,6 +40,7 @@ namespace PGI = CGAL::Polyhedral_geodesics_3::internal;
 const double pi = 3.14159265358979323846;
 
 typedef CGAL::Polyhedron_3<K> Polyhedron;
+typedef CGAL::Polyhedron_3<K, CGAL::Polyhedron_items_with_id_3> Polyhedron_with_id;
 
 PGI::Geodesic_mesh<double> compact(const Mesh& m)
 {
@@ -247,6 +251,14 @@ TEST_CASE("geodesic mesh: the packed halfedge records agree with the mesh", "[ge
     check_compact_mesh(MDCS_test::mesh_from_soup<Polyhedron>(MDCS_test::icosphere<Point_3>(1)));
     check_compact_mesh(MDCS_test::mesh_from_soup<Polyhedron>(MDCS_test::subdivided_triangle<Point_3>(6)));
   }
+  SECTION("Polyhedron_3 with ids, uninitialised (all 0) and initialised")
+  {
+    // ids all 0: the builder's index maps initialise them (get_initialized_*_index_map)
+    check_compact_mesh(MDCS_test::mesh_from_soup<Polyhedron_with_id>(MDCS_test::icosphere<Point_3>(1)));
+    Polyhedron_with_id p = MDCS_test::mesh_from_soup<Polyhedron_with_id>(MDCS_test::subdivided_triangle<Point_3>(6));
+    CGAL::set_halfedgeds_items_id(p);
+    check_compact_mesh(p);
+  }
   SECTION("faces removed and re-added: face indices not in the order of the halfedges")
   {
     Mesh m = MDCS_test::mesh_from_soup<Mesh>(MDCS_test::icosphere<Point_3>(2));
@@ -265,4 +277,71 @@ TEST_CASE("geodesic mesh: the packed halfedge records agree with the mesh", "[ge
     REQUIRE(CGAL::is_closed(m));
     check_compact_mesh(m);
   }
+}
+
+// The twins through the halfedge index (Surface_mesh, Polyhedron_3 with ids) against the walk around the opposite
+// halfedge's face, which every model can do: the same compact twin for every compact halfedge.
+template <class TM>
+void check_twins_by_index_against_walk(const TM& tm)
+{
+  typedef typename boost::graph_traits<TM>::halfedge_descriptor halfedge_descriptor;
+  typedef PGI::Large_vector<std::int32_t> Twins;
+  const auto fim = CGAL::get_initialized_face_index_map(tm);
+  std::vector<halfedge_descriptor> halfedge_of(3 * num_faces(tm));
+  for(auto f : faces(tm)) {
+    halfedge_descriptor h = halfedge(f, tm);
+    for(std::size_t k = 0; k < 3; ++k, h = next(h, tm))
+      halfedge_of[3 * std::size_t(get(fim, f)) + k] = h;
+  }
+  Twins by_index(halfedge_of.size(), -7), by_walk(halfedge_of.size(), -7);
+  PGI::Compact_twins<TM, decltype(fim), Twins, true>::compute(tm, fim, halfedge_of, by_index);
+  PGI::Compact_twins<TM, decltype(fim), Twins, false>::compute(tm, fim, halfedge_of, by_walk);
+  std::size_t boundary = 0;
+  for(std::size_t h = 0; h < halfedge_of.size(); ++h) {
+    INFO("compact halfedge " << h);
+    REQUIRE(by_index[h] == by_walk[h]);
+    if(by_walk[h] < 0)
+      ++boundary;
+  }
+  CHECK(boundary == std::size_t(std::count_if(halfedges(tm).begin(), halfedges(tm).end(),
+                                              [&](halfedge_descriptor h) { return is_border(h, tm); })));
+}
+
+TEST_CASE("geodesic mesh: twins by the halfedge index equal those by the face walk", "[geodesics][mesh]")
+{
+  check_twins_by_index_against_walk(MDCS_test::mesh_from_soup<Mesh>(MDCS_test::icosphere<Point_3>(2)));
+  check_twins_by_index_against_walk(MDCS_test::mesh_from_soup<Mesh>(MDCS_test::planar_grid<Point_3>(6, 4)));
+  check_twins_by_index_against_walk(MDCS_test::mesh_from_soup<Polyhedron_with_id>(MDCS_test::planar_grid<Point_3>(5, 5)));
+  // faces removed and re-added, garbage collected: halfedge indices not in face order
+  Mesh m = MDCS_test::mesh_from_soup<Mesh>(MDCS_test::planar_grid<Point_3>(6, 6));
+  std::vector<std::array<Mesh::Vertex_index, 3>> removed;
+  std::size_t k = 0;
+  for(auto f : std::vector<Mesh::Face_index>(faces(m).begin(), faces(m).end()))
+    if(++k % 4 == 0) {
+      auto h = halfedge(f, m);
+      removed.push_back({source(h, m), target(h, m), target(next(h, m), m)});
+      CGAL::Euler::remove_face(h, m);
+    }
+  for(std::size_t i = removed.size(); i >= 2; i -= 2) // half of them back, in reverse order; the others stay holes
+    CGAL::Euler::add_face(std::vector<Mesh::Vertex_index>{removed[i - 1][0], removed[i - 1][1], removed[i - 1][2]}, m);
+  m.collect_garbage();
+  REQUIRE(CGAL::is_valid_polygon_mesh(m));
+  REQUIRE(!CGAL::is_closed(m));
+  check_twins_by_index_against_walk(m);
+}
+
+TEST_CASE("geodesic mesh: a Surface_mesh with uncollected garbage is refused with a clear message", "[geodesics][mesh]")
+{
+  Mesh m = MDCS_test::mesh_from_soup<Mesh>(MDCS_test::icosphere<Point_3>(1));
+  CGAL::Euler::remove_face(halfedge(*std::next(faces(m).begin(), 3), m), m);
+  REQUIRE(m.has_garbage());
+  try {
+    compact(m);
+    FAIL("no exception");
+  } catch(const std::invalid_argument& e) {
+    CHECK(std::string(e.what()).find("collect_garbage") != std::string::npos);
+  }
+  m.collect_garbage();
+  const PGI::Geodesic_mesh<double> cm = compact(m);
+  CHECK(cm.number_of_faces == num_faces(m));
 }
