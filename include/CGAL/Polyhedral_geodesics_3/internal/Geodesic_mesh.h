@@ -24,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -287,8 +288,9 @@ struct Compact_twins<TriangleMesh, FaceIndexMap, IndexVector, true>
 };
 
 // The halfedge records of the compact mesh (and halfedge_of), from the mesh's connectivity and mesh.points.
+// Returns the largest edge length (+infinity when a length overflows).
 template <class FT, class TriangleMesh, class VertexIndexMap, class FaceIndexMap>
-void build_halfedge_records(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim, Geodesic_mesh<FT>& mesh,
+double build_halfedge_records(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim, Geodesic_mesh<FT>& mesh,
                             std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& halfedge_of)
 {
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
@@ -352,6 +354,7 @@ void build_halfedge_records(const TriangleMesh& tm, VertexIndexMap vim, FaceInde
   // mirror images), and the opposite corner in the halfedge's frame.
   mesh.he.clear();
   mesh.he.reserve(nh);
+  double largest_length = 0;
   for(std::size_t h = 0; h < nh; ++h) {
     const Index twin = twin_of[h];
     const Index a = source_of[h], b = source_of[std::size_t(Mesh::next(Index(h)))];
@@ -359,12 +362,15 @@ void build_halfedge_records(const TriangleMesh& tm, VertexIndexMap vim, FaceInde
     const bool canonical = twin < 0 || std::size_t(twin) > h;
     const FT length = sqrt(canonical ? squared_distance_3(mesh.points[std::size_t(a)], mesh.points[std::size_t(b)])
                                      : squared_distance_3(mesh.points[std::size_t(b)], mesh.points[std::size_t(a)]));
-    mesh.he.push_back(Geodesic_halfedge<FT>{halfedge_frame_opposite(mesh.points[std::size_t(a)],
-                                                                     mesh.points[std::size_t(b)],
-                                                                     mesh.points[std::size_t(c)], length),
-                                            length, a, twin, edge_of[h]});
+    const Point_2_ft<FT> opposite = halfedge_frame_opposite(mesh.points[std::size_t(a)], mesh.points[std::size_t(b)],
+                                                            mesh.points[std::size_t(c)], length);
+    const double length_double = to_double_value(length);
+    largest_length = length_double <= largest_length ? largest_length
+                     : length_double > largest_length ? length_double : std::numeric_limits<double>::infinity(); // NaN
+    mesh.he.push_back(Geodesic_halfedge<FT>{opposite, length, a, twin, edge_of[h]});
   }
   mesh.number_of_edges = mesh.edge_halfedge.size();
+  return largest_length;
 }
 
 template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
@@ -380,16 +386,46 @@ void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndex
   mesh.number_of_vertices = nv;
   mesh.number_of_faces = nf;
   mesh.points.assign(nv, std::array<FT, 3>{FT(0), FT(0), FT(0)});
+  double low[3] = {0, 0, 0}, high[3] = {0, 0, 0}; // the bounding box of the points
+  bool first_point = true;
   for(auto v : vertices(tm)) {
     const std::size_t i = get(vim, v);
     if(i >= nv)
       throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the vertex index map is not in [0, num_vertices)");
     const auto& p = get(vpm, v);
-    mesh.points[i] = {FT(CGAL::to_double(p.x())), FT(CGAL::to_double(p.y())), FT(CGAL::to_double(p.z()))};
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
+    // A NaN or infinite coordinate would leave its vertex unreachable by every engine, and the safety net of
+    // the window engines would expand its neighbours forever.
+    if(!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
+      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: vertex " + std::to_string(i) +
+                                  " has a coordinate that is not finite (NaN or infinity)");
+    mesh.points[i] = {FT(x), FT(y), FT(z)};
+    const double c[3] = {x, y, z};
+    for(int k = 0; k < 3; ++k) {
+      low[k] = first_point || c[k] < low[k] ? c[k] : low[k];
+      high[k] = first_point || c[k] > high[k] ? c[k] : high[k];
+    }
+    first_point = false;
   }
 
   // The halfedge records; their temporary arrays are released before the vertex pass.
-  build_halfedge_records(tm, vim, fim, mesh, halfedge_of);
+  const double largest_length = build_halfedge_records(tm, vim, fim, mesh, halfedge_of);
+
+  // The engines work in double with products of several lengths (squared distances of pseudo-sources, the
+  // frames' cross products), so far from unit scale these under- or overflow. Every class gives the same
+  // distances, bit for bit up to the scale, for CGAL's elephant (diameter about 1, edges about 0.015) scaled by
+  // 2^-150 to 2^150; at 2^-170 and 2^190 the window engines are off by 1e-6 to 5e-2, at 1e-90 the exact one
+  // did not end, and at 1e100 the frames overflow. Hence a precondition with a margin: the largest edge at
+  // least 1e-40 and the bounding box's diagonal at most 1e40.
+  const double diagonal = std::sqrt((high[0] - low[0]) * (high[0] - low[0]) + (high[1] - low[1]) * (high[1] - low[1]) +
+                                    (high[2] - low[2]) * (high[2] - low[2]));
+  if(nf > 0 && !(largest_length >= 1e-40 && diagonal <= 1e40)) {
+    char text[96];
+    std::snprintf(text, sizeof text, "largest edge length %g, bounding box diagonal %g", largest_length, diagonal);
+    throw std::invalid_argument(std::string("CGAL::Polyhedral_geodesics_3: the mesh's scale is out of range (") +
+                                text + "): the largest edge must be at least 1e-40 and the bounding box diagonal "
+                                "at most 1e40 (scale the mesh, e.g. with CGAL::Polygon_mesh_processing::transform)");
+  }
 
   // Per vertex (a pass of its own, for the same reason as the twins): one outgoing halfedge, the boundary flag,
   // and the sum of the corner angles.
