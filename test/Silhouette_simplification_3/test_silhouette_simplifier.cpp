@@ -10,7 +10,11 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 using namespace silhouette_test;
 namespace SS = CGAL::Silhouette_simplification_3;
@@ -373,4 +377,68 @@ TEST_CASE("temporal coherence: hysteresis of loop picking", "[silhouette][cohere
   SS::Loop_picking_options bad;
   bad.previous_bias = 1.5;
   CHECK_THROWS_AS(s.pick_loops(f, bad, &f), std::invalid_argument);
+}
+
+// Coordinates: NaN or infinity and a mesh far from unit scale are refused by every entry point (before: the
+// coarse mesh was built from a NaN vertex, CGAL's exact predicates asserted on an overflowing mesh, and at 1e-100
+// or 1e100 no edge was collapsed); inside the range the results do not depend on the scale (powers of two, so
+// the scaled coordinates are exact): the same coarse mesh and the same mapped loops at 2^-90 and 2^90.
+TEST_CASE("silhouette: non-finite coordinates and the scale range", "[silhouette][robustness]")
+{
+  const Mesh base = make<Mesh>(noisy_sphere(3, 0.05));
+  auto scaled = [&](double s) {
+    Mesh m = base;
+    for(auto v : vertices(m)) {
+      const Point_3 p = m.point(v);
+      m.point(v) = Point_3(p.x() * s, p.y() * s, p.z() * s);
+    }
+    return m;
+  };
+  auto message_of = [](const std::function<void()>& f) {
+    try {
+      f();
+    } catch(const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  SS::Coarse_mesh_options o;
+  o.target_faces = 200;
+  for(double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Mesh m = base;
+    const auto v = *std::next(vertices(m).begin(), 4);
+    m.point(v) = Point_3(bad, 0, 0);
+    std::vector<Mesh::Halfedge_index> out;
+    CHECK(message_of([&] { SS::build_coarse_mesh(m, o); }).find("vertex 4 has a coordinate that is not finite") !=
+          std::string::npos);
+    CHECK(message_of([&] { SS::silhouette_halfedges(m, orbit_view(0.3), std::back_inserter(out)); }).find("not finite") !=
+          std::string::npos);
+    const auto coarse = SS::build_coarse_mesh(base, o);
+    CHECK(message_of([&] { Simplifier(m, coarse.mesh, coarse.coarse_face_of_fine_face); }).find("not finite") !=
+          std::string::npos);
+  }
+  for(double s : {1e-40, 1e40}) {
+    const Mesh m = scaled(s);
+    CHECK(message_of([&] { SS::build_coarse_mesh(m, o); }).find("must be in [1e-30, 1e30]") != std::string::npos);
+  }
+  // Scale invariance inside the range: coarse faces and mapped loops as at unit scale.
+  auto run = [&](double s) {
+    const Mesh m = scaled(s);
+    const auto coarse = SS::build_coarse_mesh(m, o);
+    Simplifier simplifier(m, coarse.mesh, coarse.coarse_face_of_fine_face);
+    SS::Silhouette_frame frame;
+    const double a = 0.3, e = 0.3, r = 4 * s;
+    simplifier.extract(View::perspective(Point_3(r * std::cos(a) * std::cos(e), r * std::sin(a) * std::cos(e), r * std::sin(e))),
+                       frame);
+    simplifier.map_loops(frame);
+    return std::make_pair(num_faces(coarse.mesh), frame.mapped_halfedges());
+  };
+  const auto unit = run(1.0);
+  CHECK(!unit.second.empty());
+  for(int exponent : {-90, 90}) {
+    INFO("scale 2^" << exponent);
+    const auto other = run(std::ldexp(1.0, exponent));
+    CHECK(other.first == unit.first);
+    CHECK(other.second == unit.second);
+  }
 }

@@ -13,7 +13,9 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -63,7 +65,8 @@ struct Indexed_mesh
 
 // Copies `tm` into `im`. `halfedge_of` receives, per index, the halfedge descriptor; `face_of` the face
 // descriptor per face index; `vertex_of` the vertex descriptor per vertex index.
-// Throws std::invalid_argument when a face is not a triangle or the mesh has no face.
+// Throws std::invalid_argument when a face is not a triangle, the mesh has no face, a coordinate is not finite or
+// the bounding box diagonal is outside [1e-30, 1e30].
 template <class TriangleMesh, class VertexPointMap, class Point_3>
 void build_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Indexed_mesh<Point_3>& im,
                         std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& halfedge_of,
@@ -85,10 +88,32 @@ void build_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Indexed_mesh
 
   auto vid = get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm);
   auto hid = get(CGAL::dynamic_halfedge_property_t<std::uint32_t>(), tm);
+  double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
   for(vertex_descriptor v : vertices(tm)) {
+    const Point_3& p = get(vpm, v);
+    const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    for(int k = 0; k < 3; ++k) {
+      if(!std::isfinite(c[k]))
+        throw std::invalid_argument(std::string("MDCS: ") + caller + ": vertex " + std::to_string(im.points.size()) +
+                                    " has a coordinate that is not finite (NaN or infinity)");
+      low[k] = im.points.empty() || c[k] < low[k] ? c[k] : low[k];
+      high[k] = im.points.empty() || c[k] > high[k] ? c[k] : high[k];
+    }
     put(vid, v, std::uint32_t(im.points.size()));
-    im.points.push_back(get(vpm, v));
+    im.points.push_back(p);
     vertex_of.push_back(v);
+  }
+  // The coarse mesh (CGAL's Lindstrom-Turk costs) and the normals and band weights work with products of
+  // several lengths. CGAL's elephant scaled by powers of two gives the same coarse mesh and mapped loops from
+  // 2^-120 to 2^130 (diagonals 1e-36 to 2e39); beyond, the mapped loops change, and at 1e-100 and 1e100 no edge
+  // was collapsed. So the scale is a precondition, with a margin.
+  const double diagonal = std::sqrt((high[0] - low[0]) * (high[0] - low[0]) + (high[1] - low[1]) * (high[1] - low[1]) +
+                                    (high[2] - low[2]) * (high[2] - low[2]));
+  if(!(diagonal >= 1e-30 && diagonal <= 1e30)) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", diagonal);
+    throw std::invalid_argument(std::string("MDCS: ") + caller + ": the bounding box diagonal, " + text +
+                                ", must be in [1e-30, 1e30] (scale the mesh)");
   }
   const std::size_t nf = faces(tm).size();
   im.faces.reserve(nf);
