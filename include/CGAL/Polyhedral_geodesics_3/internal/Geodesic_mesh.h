@@ -412,11 +412,11 @@ void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndex
   const double largest_length = build_halfedge_records(tm, vim, fim, mesh, halfedge_of);
 
   // The engines work in double with products of several lengths (squared distances of pseudo-sources, the
-  // frames' cross products), so far from unit scale these under- or overflow. Exact (both schedules), merged, flat-exact and fast marching give the same
-  // distances, bit for bit up to the scale, for CGAL's elephant (diameter about 1, edges about 0.015) scaled by
-  // 2^-150 to 2^150; at 2^-170 and 2^190 the window engines are off by 1e-6 to 5e-2, at 1e-90 the exact one
-  // did not end, and at 1e100 the frames overflow. Hence a precondition with a margin: the largest edge at
-  // least 1e-40 and the bounding box's diagonal at most 1e40.
+  // frames' cross products), so far from unit scale these under- or overflow. Exact (both schedules), merged,
+  // flat-exact and fast marching give the same distances, bit for bit up to the scale, for CGAL's elephant
+  // (diameter about 1, edges about 0.015) scaled by 2^-150 to 2^150; at 2^-170 and 2^190 the window engines are
+  // off by 1e-6 to 5e-2, at 1e-90 the exact one did not end, and at 1e100 the frames overflow. Hence a
+  // precondition with a margin: the largest edge at least 1e-40 and the bounding box's diagonal at most 1e40.
   const double diagonal = std::sqrt((high[0] - low[0]) * (high[0] - low[0]) + (high[1] - low[1]) * (high[1] - low[1]) +
                                     (high[2] - low[2]) * (high[2] - low[2]));
   if(nf > 0 && !(largest_length >= 1e-40 && diagonal <= 1e40)) {
