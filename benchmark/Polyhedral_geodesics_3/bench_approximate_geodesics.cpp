@@ -6,7 +6,11 @@
 //
 //   bench_approximate_geodesics [--meshes a,b,c] [--runs N] [--methods LIST] [--tolerances T1,T2,...] [--seed S]
 //                               [--skip-exact-above N] [--mesh-dir DIR] [--extra-dir DIR] [--timeout S]
-//                               [--mem-limit-mib M] [--csv FILE] [--list]
+//                               [--mem-limit-mib M] [--path-error K] [--csv FILE] [--list]
+//
+// --path-error K also measures E the way the thesis's Table 4.4 defines it: from the length of the shortest path
+// each approximate method traces (Dijkstra, fast marching, flat-exact, merged) to K random vertices, against the
+// exact distance. Untimed, in this process, in full_field mode (paths need the field).
 //
 // Every run of every method is a forked child process (see geodesic_bench_common.h and benchmark/README.md):
 // time measured inside the child, peak memory = the child's peak RSS minus its RSS when the method starts.
@@ -170,18 +174,76 @@ struct Cell // one (mesh, method) result
   Run_header last;
   PG::Geodesic_distance_error error;
   bool has_error = false;
+  double path_error = nan_;      // --path-error: mean relative error of the traced path lengths
+  std::size_t paths_measured = 0;
 };
 
 std::string pct(double e) { return std::isfinite(e) ? fmt(100 * e, "%.3g") : "-"; }
+
+// The thesis's eq. 4.4.1 taken literally: the mean over `count` random vertices (not the source, reachable in
+// `reference`) of |length of the traced path - reference| / reference. One run in full_field mode.
+template <class Geodesics, class Make>
+double traced_path_error(Make make, Vertex source, const std::vector<double>& reference,
+                         std::size_t count, std::uint64_t seed, std::size_t& measured)
+{
+  Geodesics geodesics = make();
+  geodesics.add_source(source);
+  geodesics.compute();
+  std::vector<std::size_t> candidates;
+  for(std::size_t i = 0; i < reference.size(); ++i)
+    if(std::isfinite(reference[i]) && reference[i] > 0) candidates.push_back(i);
+  std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ull + 7);
+  const std::size_t k = std::min(count, candidates.size());
+  for(std::size_t i = 0; i < k; ++i) // partial Fisher-Yates: the first k are a uniform sample
+    std::swap(candidates[i], candidates[i + std::size_t(rng() % (candidates.size() - i))]);
+  double sum = 0;
+  measured = 0;
+  std::vector<Mesh::Point> points;
+  for(std::size_t i = 0; i < k; ++i) {
+    const Vertex v(Mesh::size_type(candidates[i]));
+    points.clear();
+    geodesics.shortest_path_points(v, std::back_inserter(points));
+    double length = 0;
+    for(std::size_t j = 1; j < points.size(); ++j) length += std::sqrt(CGAL::squared_distance(points[j - 1], points[j]));
+    if(points.empty() || !std::isfinite(length)) continue;
+    sum += std::abs(length - reference[candidates[i]]) / reference[candidates[i]];
+    ++measured;
+  }
+  return measured ? sum / double(measured) : nan_;
+}
+
+double traced_path_error(const Method& m, const Mesh& mesh, Vertex source, double mean_edge,
+                         const std::vector<double>& reference, std::size_t count, std::uint64_t seed, std::size_t& measured)
+{
+  const PG::Geodesic_memory_mode mode = PG::Geodesic_memory_mode::full_field;
+  switch(m.kind) {
+  case DIJKSTRA:
+    return traced_path_error<PG::Dijkstra_geodesic_distances_3<Mesh>>(
+      [&] { return PG::Dijkstra_geodesic_distances_3<Mesh>(mesh, mode); }, source, reference, count, seed, measured);
+  case FMM:
+    return traced_path_error<PG::Fast_marching_geodesic_distances_3<Mesh>>(
+      [&] { return PG::Fast_marching_geodesic_distances_3<Mesh>(mesh, mode); }, source, reference, count, seed, measured);
+  case FLAT:
+    return traced_path_error<PG::Flat_exact_geodesic_distances_3<Mesh>>(
+      [&] { return PG::Flat_exact_geodesic_distances_3<Mesh>(mesh, mode); }, source, reference, count, seed, measured);
+  case MERGED:
+    return traced_path_error<PG::Merged_window_geodesic_distances_3<Mesh>>(
+      [&] { return PG::Merged_window_geodesic_distances_3<Mesh>(mesh, m.eps * mean_edge, mode); }, source, reference, count,
+      seed, measured);
+  default:
+    return nan_; // heat: no paths; exact: the reference itself
+  }
+}
 std::string fmt_time(double t) { return std::isfinite(t) ? fmt(t, "%.3g") : "-"; }
 
 void usage()
 {
   std::cerr << "usage: bench_approximate_geodesics [--meshes a,b,c] [--runs N] [--methods LIST] [--tolerances T1,T2,...]\n"
                "         [--seed S] [--skip-exact-above N] [--mesh-dir DIR] [--extra-dir DIR] [--timeout S]\n"
-               "         [--mem-limit-mib M] [--csv FILE] [--list]\n"
+               "         [--mem-limit-mib M] [--path-error K] [--csv FILE] [--list]\n"
                "  methods: dijkstra fmm heat heat-idt flat-exact merged exact (default: all)\n"
                "  tolerances of merged, in mean edge lengths (default 0.1,0.01,0.001,0.0001)\n"
+               "  --path-error K: also E of the traced path lengths to K random vertices (thesis Table 4.4; untimed)\n"
                "  built-in meshes: ChineseDragon-10kv mannequin-devil armadillo bunny00 refined_elephant\n"
                "                   mannequin-devil-loop1 armadillo-loop1 bunny00-loop1 bunny00-loop2\n";
 }
@@ -196,6 +258,7 @@ int main(int argc, char** argv)
   std::vector<double> tolerances = {1e-1, 1e-2, 1e-3, 1e-4};
   std::uint64_t seed = 1;
   std::size_t skip_exact_above = 300000;
+  std::size_t path_error_count = 0;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -224,6 +287,7 @@ int main(int argc, char** argv)
       std::sort(tolerances.rbegin(), tolerances.rend()); // from the coarsest to the finest
     } else if(a == "--seed" && has_value) seed = std::strtoull(argv[++i], nullptr, 10);
     else if(a == "--skip-exact-above" && has_value) skip_exact_above = std::strtoul(argv[++i], nullptr, 10);
+    else if(a == "--path-error" && has_value) path_error_count = std::strtoul(argv[++i], nullptr, 10);
     else {
       usage();
       return 2;
@@ -382,6 +446,13 @@ int main(int argc, char** argv)
                                                 boost::make_iterator_property_map(reference->cbegin(), index));
           c.has_error = true;
           if(c.error.unreachable_mismatches) note << c.error.unreachable_mismatches << " vertices reachable in one only; ";
+          if(path_error_count > 0 && !c.is_reference) {
+            c.path_error = traced_path_error(methods[k], mesh, source, mean_edge, *reference, path_error_count, seed,
+                                             c.paths_measured);
+            if(std::isfinite(c.path_error))
+              std::cout << "  " << spec.name << ", " << methods[k].name() << ": E of traced path lengths "
+                        << pct(c.path_error) << "% (" << c.paths_measured << " paths)\n" << std::flush;
+          }
         }
       }
       c.note = note.str();
@@ -421,6 +492,18 @@ int main(int argc, char** argv)
   }
   mem_table.print();
 
+  if(path_error_count > 0) {
+    std::cout << "\nE of traced path lengths (%), thesis Table 4.4's measure (eq. 4.4.1 with the length of each method's "
+                 "path), on up to " << path_error_count << " random vertices:\n";
+    mdcs_bench::Table path_table(mem_header);
+    for(const auto& row : table_rows) {
+      std::vector<std::string> line = {row.front().mesh};
+      for(const Cell& c : row) line.push_back(std::isfinite(c.path_error) ? pct(c.path_error) : "-");
+      path_table.add_row(line);
+    }
+    path_table.print();
+  }
+
   std::cout << "\nMaximum relative error (%) against the reference:\n";
   mdcs_bench::Table max_table(mem_header);
   for(const auto& row : table_rows) {
@@ -435,7 +518,7 @@ int main(int argc, char** argv)
                                "method", "tolerance_edges", "tolerance_abs", "time_s", "setup_s", "solve_s", "peak_MiB",
                                "E_mean_rel_pct", "E_max_rel_pct", "max_abs_err", "compared", "unreachable_mismatches",
                                "reference", "runs_ok", "windows_created", "windows_merged", "vertex_updates",
-                               "dag_rejections", "note"});
+                               "dag_rejections", "note", "E_path_pct", "paths_measured"});
   for(const auto& row : table_rows)
     for(const Cell& c : row) {
       std::string note = c.note;
@@ -454,7 +537,9 @@ int main(int argc, char** argv)
                          e ? std::to_string(c.error.unreachable_mismatches) : "", c.is_reference ? "self" : reference,
                          std::to_string(c.runs_ok), c.ran ? std::to_string(c.last.windows_created) : "",
                          c.ran ? std::to_string(c.last.windows_merged) : "", c.ran ? std::to_string(c.last.vertex_updates) : "",
-                         c.ran ? std::to_string(c.last.dag_rejections) : "", note});
+                         c.ran ? std::to_string(c.last.dag_rejections) : "", note,
+                         std::isfinite(c.path_error) ? fmt(100 * c.path_error, "%.6g") : "",
+                         c.paths_measured ? std::to_string(c.paths_measured) : ""});
     }
   write_table_csv(csv_table, o.csv);
 
