@@ -53,6 +53,23 @@ PGI::Geodesic_mesh<double> compact(const Mesh& m)
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
+// Removes every `every`-th face, adds back every `back_every`-th of them in reverse order, collects the garbage:
+// face and halfedge indices no longer follow each other.
+void remove_and_add_back_faces(Mesh& m, std::size_t every, std::size_t back_every)
+{
+  std::vector<std::array<Mesh::Vertex_index, 3>> removed;
+  std::size_t k = 0;
+  for(auto f : std::vector<Mesh::Face_index>(faces(m).begin(), faces(m).end()))
+    if(++k % every == 0) {
+      auto h = halfedge(f, m);
+      removed.push_back({source(h, m), target(h, m), target(next(h, m), m)});
+      CGAL::Euler::remove_face(h, m);
+    }
+  for(std::size_t i = removed.size(); i >= back_every; i -= back_every)
+    CGAL::Euler::add_face(std::vector<Mesh::Vertex_index>{removed[i - 1][0], removed[i - 1][1], removed[i - 1][2]}, m);
+  m.collect_garbage();
+}
+
 // Every field of the packed halfedge records and of the vertex arrays, against the original mesh.
 template <class TM>
 void check_compact_mesh(const TM& tm)
@@ -262,17 +279,7 @@ TEST_CASE("geodesic mesh: the packed halfedge records agree with the mesh", "[ge
   SECTION("faces removed and re-added: face indices not in the order of the halfedges")
   {
     Mesh m = MDCS_test::mesh_from_soup<Mesh>(MDCS_test::icosphere<Point_3>(2));
-    std::vector<std::array<Mesh::Vertex_index, 3>> removed;
-    std::size_t k = 0;
-    for(auto f : std::vector<Mesh::Face_index>(faces(m).begin(), faces(m).end()))
-      if(++k % 3 == 0) {
-        auto h = halfedge(f, m);
-        removed.push_back({source(h, m), target(h, m), target(next(h, m), m)});
-        CGAL::Euler::remove_face(h, m);
-      }
-    for(auto it = removed.rbegin(); it != removed.rend(); ++it)
-      CGAL::Euler::add_face(std::vector<Mesh::Vertex_index>{(*it)[0], (*it)[1], (*it)[2]}, m);
-    m.collect_garbage();
+    remove_and_add_back_faces(m, 3, 1);
     REQUIRE(CGAL::is_valid_polygon_mesh(m));
     REQUIRE(CGAL::is_closed(m));
     check_compact_mesh(m);
@@ -314,17 +321,7 @@ TEST_CASE("geodesic mesh: twins by the halfedge index equal those by the face wa
   check_twins_by_index_against_walk(MDCS_test::mesh_from_soup<Polyhedron_with_id>(MDCS_test::planar_grid<Point_3>(5, 5)));
   // faces removed and re-added, garbage collected: halfedge indices not in face order
   Mesh m = MDCS_test::mesh_from_soup<Mesh>(MDCS_test::planar_grid<Point_3>(6, 6));
-  std::vector<std::array<Mesh::Vertex_index, 3>> removed;
-  std::size_t k = 0;
-  for(auto f : std::vector<Mesh::Face_index>(faces(m).begin(), faces(m).end()))
-    if(++k % 4 == 0) {
-      auto h = halfedge(f, m);
-      removed.push_back({source(h, m), target(h, m), target(next(h, m), m)});
-      CGAL::Euler::remove_face(h, m);
-    }
-  for(std::size_t i = removed.size(); i >= 2; i -= 2) // half of them back, in reverse order; the others stay holes
-    CGAL::Euler::add_face(std::vector<Mesh::Vertex_index>{removed[i - 1][0], removed[i - 1][1], removed[i - 1][2]}, m);
-  m.collect_garbage();
+  remove_and_add_back_faces(m, 4, 2); // half of the removed faces stay holes
   REQUIRE(CGAL::is_valid_polygon_mesh(m));
   REQUIRE(!CGAL::is_closed(m));
   check_twins_by_index_against_walk(m);
