@@ -49,7 +49,9 @@ namespace Polyhedral_geodesics_3 {
   - Shortest paths run along mesh edges: from the query point to the best corner of its face, then from
     every vertex to the neighbour it was last updated from, down to the source (a vertex or the surface
     point). A path is a path on the surface, so its length is at least the geodesic distance; it is an
-    illustration of where the distance comes from, not a geodesic.
+    illustration of where the distance comes from, not a geodesic. Measured on 11 meshes of 8k-151k vertices
+    (`bench_approximate_geodesics --path-error`), these paths are 7 to 15% longer than the geodesics on average,
+    longer than Dijkstra's shortest edge paths (4 to 8%); use the flat-exact or merged class for short paths.
   - The memory mode only controls which queries are allowed (`distances_only` forbids point queries and
     paths); the engine keeps nothing but per-vertex arrays and the per-corner update triangles.
   - Distance limit: vertices whose value exceeds the limit report `+infinity`. Stop targets: the
