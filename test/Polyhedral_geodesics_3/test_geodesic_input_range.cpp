@@ -15,6 +15,7 @@
 #include <CGAL/Polyhedral_geodesics_3.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/transform.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <cmath>
@@ -63,10 +64,7 @@ std::vector<std::pair<std::string, Method>> all_methods()
 Mesh scaled(const Mesh& m, double s)
 {
   Mesh r = m;
-  for(vertex_descriptor v : vertices(r)) {
-    const Point_3 p = r.point(v);
-    r.point(v) = Point_3(p.x() * s, p.y() * s, p.z() * s);
-  }
+  CGAL::Polygon_mesh_processing::transform(K::Aff_transformation_3(CGAL::SCALING, s), r);
   return r;
 }
 

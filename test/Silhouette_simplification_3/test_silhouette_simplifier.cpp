@@ -8,6 +8,7 @@
 #include <CGAL/Min_cut/Boykov_kolmogorov_max_flow.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/transform.h>
 
 #include <cmath>
 #include <functional>
@@ -388,10 +389,7 @@ TEST_CASE("silhouette: non-finite coordinates and the scale range", "[silhouette
   const Mesh base = make<Mesh>(noisy_sphere(3, 0.05));
   auto scaled = [&](double s) {
     Mesh m = base;
-    for(auto v : vertices(m)) {
-      const Point_3 p = m.point(v);
-      m.point(v) = Point_3(p.x() * s, p.y() * s, p.z() * s);
-    }
+    CGAL::Polygon_mesh_processing::transform(K::Aff_transformation_3(CGAL::SCALING, s), m);
     return m;
   };
   auto message_of = [](const std::function<void()>& f) {

@@ -116,7 +116,7 @@ public:
   const std::vector<std::uint32_t>& fine_faces_of_coarse_begin() const { return cf_begin_; }
   const std::vector<std::uint32_t>& fine_faces_of_coarse() const { return cf_; }
   /// The diagonal of the fine mesh's bounding box.
-  double diagonal() const { return diagonal_; }
+  double diagonal() const { return fine_.diagonal; }
   /// The fine mesh's halfedge descriptor of fine halfedge index `h`.
   halfedge_descriptor fine_halfedge(std::uint32_t h) const { return fine_halfedge_[h]; }
   /// The fine mesh's face descriptor of fine face index `f`.
@@ -164,7 +164,7 @@ public:
       mark_edges(previous->picked_halfedges());
       flags = &edge_flag_;
     }
-    frame.picking_error = internal::pick_loops(fine_, coarse_points_, frame.fine_loops, diagonal_, options, flags,
+    frame.picking_error = internal::pick_loops(fine_, coarse_points_, frame.fine_loops, fine_.diagonal, options, flags,
                                                frame.picked, table_);
     if(flags) unmark_edges(previous->picked_halfedges());
   }
@@ -239,18 +239,6 @@ private:
     for(std::uint32_t f = 0; f < map.size(); ++f) cf_[fill[map[f]]++] = f;
 
     length_.resize(fine_.number_of_halfedges());
-    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    for(const Point_3& p : fine_.points) {
-      const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-      for(int i = 0; i < 3; ++i) {
-        if(!std::isfinite(c[i]))
-          throw std::invalid_argument("MDCS: Silhouette_simplifier_3: the fine mesh has a non-finite coordinate");
-        lo[i] = std::min(lo[i], c[i]);
-        hi[i] = std::max(hi[i], c[i]);
-      }
-    }
-    diagonal_ = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                          (hi[2] - lo[2]) * (hi[2] - lo[2]));
     for(std::uint32_t h = 0; h < length_.size(); ++h)
       length_[h] = std::sqrt(CGAL::to_double(CGAL::squared_distance(fine_.points[fine_.source[h]],
                                                                     fine_.points[fine_.target(h)])));
@@ -285,7 +273,6 @@ private:
   std::vector<char> edge_flag_;
   std::vector<Point_3> coarse_points_;
   std::vector<float> table_;
-  double diagonal_ = 0;
   internal::Loop_decomposer decomposer_;
   std::unique_ptr<internal::Loop_mapper<Point_3>> mapper_;
 };

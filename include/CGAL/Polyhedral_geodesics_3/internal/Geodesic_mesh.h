@@ -15,6 +15,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/MDCS/internal/bounding_box.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Large_page_allocator.h>
 
@@ -364,9 +365,9 @@ double build_halfedge_records(const TriangleMesh& tm, VertexIndexMap vim, FaceIn
                                      : squared_distance_3(mesh.points[std::size_t(b)], mesh.points[std::size_t(a)]));
     const Point_2_ft<FT> opposite = halfedge_frame_opposite(mesh.points[std::size_t(a)], mesh.points[std::size_t(b)],
                                                             mesh.points[std::size_t(c)], length);
-    const double length_double = to_double_value(length);
-    largest_length = length_double <= largest_length ? largest_length
-                     : length_double > largest_length ? length_double : std::numeric_limits<double>::infinity(); // NaN
+    const double length_double = to_double_value(length); // NaN when the squared length overflowed
+    largest_length = std::isnan(length_double) ? std::numeric_limits<double>::infinity()
+                                               : (std::max)(largest_length, length_double);
     mesh.he.push_back(Geodesic_halfedge<FT>{opposite, length, a, twin, edge_of[h]});
   }
   mesh.number_of_edges = mesh.edge_halfedge.size();
@@ -386,8 +387,7 @@ void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndex
   mesh.number_of_vertices = nv;
   mesh.number_of_faces = nf;
   mesh.points.assign(nv, std::array<FT, 3>{FT(0), FT(0), FT(0)});
-  double low[3] = {0, 0, 0}, high[3] = {0, 0, 0}; // the bounding box of the points
-  bool first_point = true;
+  CGAL::Bbox_3 box;
   for(auto v : vertices(tm)) {
     const std::size_t i = get(vim, v);
     if(i >= nv)
@@ -400,12 +400,7 @@ void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndex
       throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: vertex " + std::to_string(i) +
                                   " has a coordinate that is not finite (NaN or infinity)");
     mesh.points[i] = {FT(x), FT(y), FT(z)};
-    const double c[3] = {x, y, z};
-    for(int k = 0; k < 3; ++k) {
-      low[k] = first_point || c[k] < low[k] ? c[k] : low[k];
-      high[k] = first_point || c[k] > high[k] ? c[k] : high[k];
-    }
-    first_point = false;
+    box += CGAL::Bbox_3(x, y, z, x, y, z);
   }
 
   // The halfedge records; their temporary arrays are released before the vertex pass.
@@ -417,8 +412,7 @@ void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndex
   // (diameter about 1, edges about 0.015) scaled by 2^-150 to 2^150; at 2^-170 and 2^190 the window engines are
   // off by 1e-6 to 5e-2, at 1e-90 the exact one did not end, and at 1e100 the frames overflow. Hence a
   // precondition with a margin: the largest edge at least 1e-40 and the bounding box's diagonal at most 1e40.
-  const double diagonal = std::sqrt((high[0] - low[0]) * (high[0] - low[0]) + (high[1] - low[1]) * (high[1] - low[1]) +
-                                    (high[2] - low[2]) * (high[2] - low[2]));
+  const double diagonal = MDCS::internal::bbox_diagonal(box);
   if(nf > 0 && !(largest_length >= 1e-40 && diagonal <= 1e40)) {
     char text[96];
     std::snprintf(text, sizeof text, "largest edge length %g, bounding box diagonal %g", largest_length, diagonal);

@@ -10,6 +10,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Dynamic_property_map.h>
+#include <CGAL/MDCS/internal/bounding_box.h>
 #include <boost/graph/graph_traits.hpp>
 
 #include <array>
@@ -38,6 +39,7 @@ struct Indexed_mesh
   std::vector<std::uint32_t> opposite; // per halfedge (always defined)
   // Vertex -> incident faces (CSR).
   std::vector<std::uint32_t> vf_begin, vf;
+  double diagonal = 0; // of the points' bounding box
 
   std::size_t number_of_faces() const { return faces.size(); }
   std::size_t number_of_interior_halfedges() const { return 3 * faces.size(); }
@@ -88,17 +90,15 @@ void build_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Indexed_mesh
 
   auto vid = get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm);
   auto hid = get(CGAL::dynamic_halfedge_property_t<std::uint32_t>(), tm);
-  double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
+  CGAL::Bbox_3 box;
   for(vertex_descriptor v : vertices(tm)) {
     const Point_3& p = get(vpm, v);
     const double c[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-    for(int k = 0; k < 3; ++k) {
+    for(int k = 0; k < 3; ++k)
       if(!std::isfinite(c[k]))
         throw std::invalid_argument(std::string("MDCS: ") + caller + ": vertex " + std::to_string(im.points.size()) +
                                     " has a coordinate that is not finite (NaN or infinity)");
-      low[k] = im.points.empty() || c[k] < low[k] ? c[k] : low[k];
-      high[k] = im.points.empty() || c[k] > high[k] ? c[k] : high[k];
-    }
+    box += CGAL::Bbox_3(c[0], c[1], c[2], c[0], c[1], c[2]);
     put(vid, v, std::uint32_t(im.points.size()));
     im.points.push_back(p);
     vertex_of.push_back(v);
@@ -107,11 +107,10 @@ void build_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Indexed_mesh
   // several lengths. CGAL's elephant scaled by powers of two gives the same coarse mesh and mapped loops from
   // 2^-120 to 2^130 (diagonals 1e-36 to 2e39); beyond, the mapped loops change, and at 1e-100 and 1e100 no edge
   // was collapsed. So the scale is a precondition, with a margin.
-  const double diagonal = std::sqrt((high[0] - low[0]) * (high[0] - low[0]) + (high[1] - low[1]) * (high[1] - low[1]) +
-                                    (high[2] - low[2]) * (high[2] - low[2]));
-  if(!(diagonal >= 1e-30 && diagonal <= 1e30)) {
+  im.diagonal = CGAL::MDCS::internal::bbox_diagonal(box);
+  if(!(im.diagonal >= 1e-30 && im.diagonal <= 1e30)) {
     char text[32];
-    std::snprintf(text, sizeof text, "%g", diagonal);
+    std::snprintf(text, sizeof text, "%g", im.diagonal);
     throw std::invalid_argument(std::string("MDCS: ") + caller + ": the bounding box diagonal, " + text +
                                 ", must be in [1e-30, 1e30] (scale the mesh)");
   }
