@@ -334,6 +334,21 @@ protected:
   template <class Emit>
   void trace_from(Index f, const std::array<FT, 3>& b, const Candidate& first, Emit& emit) const
   {
+    const Index at_vertex = emit_query_node(f, b, emit);
+    if(first.face_source >= 0) {
+      if(first.value > FT(0)) // else the query point is the source
+        emit(source_node(first.face_source));
+      return;
+    }
+    if(first.vertex != at_vertex)
+      emit(vertex_node(first.vertex));
+    emit_predecessor_chain(first.vertex, emit);
+  }
+
+  // The node of the query point (f, b): a vertex, an edge point or a face point. Returns the vertex, or -1.
+  template <class Emit>
+  Index emit_query_node(Index f, const std::array<FT, 3>& b, Emit& emit) const
+  {
     int zeros = 0, nonzero = 0;
     for(int k = 0; k < 3; ++k) {
       if(b[std::size_t(k)] == FT(0))
@@ -341,23 +356,24 @@ protected:
       else
         nonzero = k;
     }
-    Index at_vertex = -1;
     if(zeros >= 2) {
-      at_vertex = mesh_.source(3 * f + nonzero);
-      emit(vertex_node(at_vertex));
-    } else if(zeros == 1) {
+      const Index v = mesh_.source(3 * f + nonzero);
+      emit(vertex_node(v));
+      return v;
+    }
+    if(zeros == 1) {
       const Index g = halfedge_of_edge_point(f, b);
       emit(edge_node(g, b[std::size_t(Mesh::next(g) % 3)]));
     } else
       emit(face_node(f, b));
-    if(first.face_source >= 0) {
-      if(first.value > FT(0)) // else the query point is the source
-        emit(source_node(first.face_source));
-      return;
-    }
-    Index v = first.vertex;
-    if(v != at_vertex)
-      emit(vertex_node(v));
+    return -1;
+  }
+
+  // The vertices after the final vertex v (already emitted) on its predecessor chain, down to a vertex source or
+  // a surface-point source.
+  template <class Emit>
+  void emit_predecessor_chain(Index v, Emit& emit) const
+  {
     for(std::size_t step = 0; step <= mesh_.number_of_vertices; ++step) {
       const Index p = pred_[std::size_t(v)];
       if(p == -1)

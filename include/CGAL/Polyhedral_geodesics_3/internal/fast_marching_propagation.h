@@ -29,9 +29,9 @@
 //   it lowers the mean error on every mesh measured, e.g. 2.6% -> 2.3% on CGAL's elephant and it halves
 //   the largest error on sheared grids).
 // - A binary heap with lazy deletion holds the narrow band; a vertex is final when it is popped.
-// - Paths follow, from vertex to vertex, the neighbour each vertex was last lowered from (for a
-//   two-point update, the final one of X and Y with the smaller value among the real mesh neighbours of
-//   C): they run along mesh edges.
+// - Paths descend the interpolated field across the faces (fast_marching_paths.h). The predecessor of a
+//   vertex (the neighbour it was last lowered from; for a two-point update, the final one of X and Y with the
+//   smaller value among the real mesh neighbours of C) is their way out where the descent stalls.
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_FAST_MARCHING_PROPAGATION_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_FAST_MARCHING_PROPAGATION_H
@@ -40,6 +40,7 @@
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/dijkstra_edge_propagation.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/fast_marching_paths.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
 
 #include <array>
@@ -53,9 +54,9 @@ namespace Polyhedral_geodesics_3 {
 namespace internal {
 
 template <class FT>
-class Fast_marching_propagation : public Vertex_front_propagation_base<FT>
+class Fast_marching_propagation : public Fast_marching_paths<FT>
 {
-  typedef Vertex_front_propagation_base<FT> Base;
+  typedef Fast_marching_paths<FT> Base;
 
 public:
   typedef typename Base::Mesh Mesh;
@@ -65,7 +66,6 @@ public:
 
   explicit Fast_marching_propagation(const Mesh& mesh, int max_unfoldings = 30) : Base(mesh)
   {
-    build_star();
     build_update_triangles(max_unfoldings);
   }
 
@@ -88,9 +88,9 @@ public:
       const std::size_t vi = std::size_t(v);
       const Index src = this->source_[vi];
       // the faces around v: v is the corner h, the two other corners c1 = next(h) and c2 = prev(h)
-      const Index send = star_begin_[vi + 1];
-      for(Index k = star_begin_[vi]; k < send; ++k) {
-        const Index h = star_[std::size_t(k)];
+      const Index send = this->star_begin_[vi + 1];
+      for(Index k = this->star_begin_[vi]; k < send; ++k) {
+        const Index h = this->star_[std::size_t(k)];
         const Index c1 = Mesh::next(h), c2 = Mesh::prev(h);
         const Index v1 = m.he[std::size_t(c1)].source, v2 = m.he[std::size_t(c2)].source;
         // one-sided updates along the edges v -> v1 (halfedge h) and v2 -> v (halfedge c2)
@@ -112,7 +112,7 @@ public:
         two_point_update(e.target, v, key, other_is_real ? e.other : ~e.other, e.qxx, e.qxy, e.qyy, other_is_real);
       }
     }
-    this->finish_run(star_begin_.capacity() * sizeof(Index) + star_.capacity() * sizeof(Index) +
+    this->finish_run(this->star_begin_.capacity() * sizeof(Index) + this->star_.capacity() * sizeof(Index) +
                      corner_q_.capacity() * sizeof(std::array<FT, 3>) + virtual_begin_.capacity() * sizeof(Index) +
                      virtual_.capacity() * sizeof(Virtual_entry));
     report.finish();
@@ -153,9 +153,9 @@ public:
     return {value, source};
   }
 
-  // The query point, then the best corner (minimising T(v) + |p - v|) or the surface-point source, then the
-  // chain of the neighbours each vertex was lowered from, down to the source. The path runs along mesh edges;
-  // its length is at least the geodesic distance and at least the fast-marching value at a vertex.
+  // The query point, then the steepest descent of the interpolated field down to the source
+  // (fast_marching_paths.h), or straight to a surface-point source when that is the best candidate of the
+  // query point (the one minimising T(v) + |p - v| over the corners, or the straight distance to the source).
   template <class Emit>
   void trace_path(Index f, const std::array<FT, 3>& b, Emit emit) const
   {
@@ -167,7 +167,7 @@ public:
     this->face_source_candidates(f, b, p, first);
     if(first.vertex < 0 && first.face_source < 0)
       return;
-    this->trace_from(f, b, first, emit);
+    this->trace_descent(f, b, first, emit);
   }
 
 private:
@@ -230,9 +230,6 @@ private:
     q = {gyy / det, -gxy / det, gxx / det};
     return true;
   }
-
-  // the corners around every vertex (compressed rows of the compact halfedges by source)
-  void build_star() { build_vertex_star(this->mesh_, star_begin_, star_); }
 
   // Per corner C (compact halfedge c, supports A = source(next(c)), B = source(prev(c))): the inverse Gram matrix
   // of (A - C, B - C), and for an obtuse corner the two virtual triangles (C, A, D) and (C, D, B).
@@ -331,7 +328,6 @@ private:
     return false;
   }
 
-  std::vector<Index> star_begin_, star_;   // the corners around every vertex
   std::vector<std::array<FT, 3>> corner_q_; // per corner: inverse Gram matrix of its real triangle (0: degenerate)
   std::vector<Index> virtual_begin_;        // the virtual triangles by support
   std::vector<Virtual_entry> virtual_;
