@@ -699,10 +699,53 @@ double check_paths(const Mesh& m, const std::string& name, double max_excess = 0
 
 } // namespace
 
-// Fast marching's paths descend the interpolated field across the faces. Checked from every vertex: the path ends
-// at the source, consecutive nodes share a face, the value never grows along it, and its length is at least the
-// exact distance. On planar grids (Euclidean oracle) the mean length is within a measured bound of the straight
-// distance; after a run stopped at a distance limit the faces beyond the front are never entered.
+// Fast marching's paths from every reachable vertex to the source s (after a run stopped at `limit`, when it is
+// finite): each ends at s, consecutive nodes share a face, the value never grows along it (a vertex beyond the
+// front would be +infinity), and its length is at least the exact distance. Returns the mean length / exact - 1.
+double check_descent_paths(const Mesh& m, vertex_descriptor s, double limit_fraction)
+{
+  const double floor_value = tolerance * MDCS_test::bbox_diagonal(m);
+  Exact exact(m);
+  exact.add_source(s);
+  Fmm g(m);
+  g.add_source(s);
+  double limit = inf;
+  if(limit_fraction > 0) {
+    std::vector<double> d = vertex_distances(g, m);
+    std::sort(d.begin(), d.end());
+    limit = d[std::size_t(limit_fraction * double(d.size()))];
+    g.set_distance_limit(limit);
+  }
+  std::size_t bad_ends = 0, bad_steps = 0, rising = 0, too_short = 0, paths = 0;
+  double sum_excess = 0;
+  for(vertex_descriptor v : vertices(m)) {
+    if(v == s || !(g.distance(v) < inf) || !(g.distance(v) <= limit)) // unreachable (other components), or beyond
+      continue;
+    std::vector<Point_3> path;
+    g.shortest_path_points(v, std::back_inserter(path));
+    Sequence_recorder seq(m, &g);
+    g.shortest_path_sequence(v, seq);
+    REQUIRE(seq.kinds.size() == path.size());
+    if(path.size() < 2 || seq.kinds.back() != Sequence_recorder::VERTEX || seq.vertices.back() != s)
+      ++bad_ends;
+    bad_steps += seq.steps_outside_a_face();
+    rising += seq.rising_steps(floor_value);
+    const double length = MDCS_test::path_length(path), e = exact.distance(v);
+    if(length < e * (1 - tolerance) - floor_value)
+      ++too_short;
+    sum_excess += length / e - 1;
+    ++paths;
+  }
+  CHECK(paths > 0);
+  CHECK(bad_ends == 0);
+  CHECK(bad_steps == 0);
+  CHECK(rising == 0);
+  CHECK(too_short == 0);
+  return paths > 0 ? sum_excess / double(paths) : 0;
+}
+
+// On planar grids (the exact distance is the Euclidean one) the mean length is within a measured bound of the
+// straight distance; a bumpy sphere is also checked after a run stopped at a distance limit.
 TEST_CASE("fast marching: descent paths on planar grids and after a distance limit", "[geodesics][fmm]")
 {
   struct Case
@@ -718,48 +761,26 @@ TEST_CASE("fast marching: descent paths on planar grids and after a distance lim
   for(const Case& c : cases) {
     INFO(c.mesh.name);
     const Mesh m = make_mesh(c.mesh.soup);
-    const double floor_value = tolerance * MDCS_test::bbox_diagonal(m);
-    const vertex_descriptor s = MDCS_test::nearest_vertex(m, Vec3{0.55, 0.3, 0});
-    Exact exact(m);
-    exact.add_source(s);
-    Fmm g(m);
-    g.add_source(s);
-    double limit = inf;
-    if(c.limit_fraction > 0) {
-      std::vector<double> d = vertex_distances(g, m);
-      std::sort(d.begin(), d.end());
-      limit = d[std::size_t(c.limit_fraction * double(d.size()))];
-      g.set_distance_limit(limit);
-    }
-    std::size_t bad_ends = 0, bad_steps = 0, rising = 0, too_short = 0, paths = 0;
-    double sum_excess = 0;
-    for(vertex_descriptor v : vertices(m)) {
-      if(v == s || !(g.distance(v) <= limit))
-        continue;
-      std::vector<Point_3> path;
-      g.shortest_path_points(v, std::back_inserter(path));
-      Sequence_recorder seq(m, &g);
-      g.shortest_path_sequence(v, seq);
-      REQUIRE(seq.kinds.size() == path.size());
-      if(path.size() < 2 || seq.kinds.back() != Sequence_recorder::VERTEX || seq.vertices.back() != s)
-        ++bad_ends;
-      bad_steps += seq.steps_outside_a_face();
-      rising += seq.rising_steps(floor_value);
-      const double length = MDCS_test::path_length(path), e = exact.distance(v);
-      if(length < e * (1 - tolerance) - floor_value)
-        ++too_short;
-      sum_excess += length / e - 1;
-      ++paths;
-    }
-    REQUIRE(paths > 100);
-    CHECK(bad_ends == 0);
-    CHECK(bad_steps == 0);
-    CHECK(rising == 0);
-    CHECK(too_short == 0);
-    // measured mean excess: planar 0.31%, jittered 0.41%, sheared 0.34%, bumpy sphere (stopped at the limit) 1.09%
-    const double mean_excess = sum_excess / double(paths);
+    const double mean_excess = check_descent_paths(m, MDCS_test::nearest_vertex(m, Vec3{0.55, 0.3, 0}), c.limit_fraction);
+    // measured: planar 0.31%, jittered 0.41%, sheared 0.34%, bumpy sphere (stopped at the limit) 1.09%
     WARN(c.mesh.name << ": mean path length / exact - 1 = " << mean_excess);
     CHECK(mean_excess < 0.015);
+  }
+}
+
+// The meshes where the descent is hardest: mechanical parts with needle triangles and many holes, and a tiny
+// mesh with degenerate faces (CGAL's demo data; skipped when it is not there). Only the invariants are asserted:
+// fast marching's values are poor there too (measured mean excess: degtri_sliding 39%, oblong 7.9%, pinion
+// 4.5%, cheese 6.4%, elephant-with-holes 2.7%, with the source a third of the way through the vertices).
+TEST_CASE("fast marching: descent paths on CGAL's mechanical parts and meshes with holes", "[geodesics][fmm]")
+{
+  for(const char* name : {"degtri_sliding.off", "oblong.off", "pinion.off", "cheese.off", "elephant-with-holes.off"}) {
+    Mesh m;
+    if(!MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh(name), m))
+      continue;
+    INFO(name);
+    const double mean_excess = check_descent_paths(m, *std::next(vertices(m).begin(), num_vertices(m) / 3), 0);
+    WARN(name << ": mean path length / exact - 1 = " << mean_excess);
   }
 }
 
