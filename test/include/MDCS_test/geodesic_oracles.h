@@ -358,6 +358,17 @@ Triangle_soup<Point_3> jittered_planar_grid(std::size_t nx, std::size_t ny, doub
   return soup;
 }
 
+// The grid [0,1]^2 (z = 0) of planar_grid() sheared to the parallelogram x' = x + 0.9 y: half of its triangles have
+// an obtuse corner.
+template <class Point_3>
+Triangle_soup<Point_3> sheared_planar_grid(std::size_t n)
+{
+  Triangle_soup<Point_3> soup = planar_grid<Point_3>(n, n);
+  for(Point_3& p : soup.points)
+    p = Point_3(CGAL::to_double(p.x()) + 0.9 * CGAL::to_double(p.y()), CGAL::to_double(p.y()), 0);
+  return soup;
+}
+
 // The surface of the unit cube [0,1]^3, every face an n x n grid of squares split along alternating diagonals,
 // outward oriented, closed (6 n^2 + 2 vertices, 12 n^2 triangles).
 template <class Point_3>

@@ -73,6 +73,8 @@ protected:
     // the path stays with this source: it only enters faces whose corners all have it, and only ends there
     const Index target = this->candidate_source(first);
     const std::size_t budget = 4 * this->mesh_.number_of_faces + 16;
+    Face_frame fr;
+    bool have_frame = false; // fr is already the frame of f (computed when the path chose f)
     for(std::size_t step = 0;; ++step) {
       if(step > budget) {
         if(v >= 0)
@@ -92,7 +94,7 @@ protected:
         if(vertex_reaches_source_straight(v, target, emit))
           return;
         Index next_vertex = -1, corner = -1;
-        steepest_descent_at(v, target, next_vertex, corner);
+        steepest_descent_at(v, target, next_vertex, corner, fr);
         if(next_vertex >= 0) {
           v = next_vertex;
           emit(this->vertex_node(v));
@@ -106,15 +108,16 @@ protected:
         b = {FT(0), FT(0), FT(0)};
         b[std::size_t(corner % 3)] = FT(1);
         v = -1;
+        have_frame = true; // steepest_descent_at() left the frame of that face in fr
       }
       // inside face f (or on its border) at b
       if(reaches_source_straight(f, b, target, emit))
         return;
-      Face_frame fr;
-      if(!face_frame(f, fr, -1)) { // the query's face may have corners of other sources
+      if(!have_frame && !face_frame(f, fr, -1)) { // the query's face may have corners of other sources
         leave_face_to_corner(f, b, target, emit);
         return;
       }
+      have_frame = false;
       // the first barycentric coordinate that the descent drives to zero
       int exit = -1;
       FT t_exit = FT(0);
@@ -168,6 +171,8 @@ protected:
         if(face_frame(f2, fr2, target) && fr2.sine[std::size_t((i + 2) % 3)] > angle_margin()) {
           f = f2;
           b = b2;
+          fr = fr2;
+          have_frame = true;
           continue;
         }
       }
@@ -238,8 +243,8 @@ private:
   }
 
   // The steepest descent from vertex v: along an edge (next_vertex) or into the face of the corner `corner`
-  // (a compact halfedge from v); neither when no direction descends.
-  void steepest_descent_at(Index v, Index target, Index& next_vertex, Index& corner) const
+  // (a compact halfedge from v, the face's frame then in corner_frame); neither when no direction descends.
+  void steepest_descent_at(Index v, Index target, Index& next_vertex, Index& corner, Face_frame& corner_frame) const
   {
     const Mesh& m = this->mesh_;
     const FT tv = this->dist_[std::size_t(v)];
@@ -273,6 +278,7 @@ private:
         best = fr.slope;
         next_vertex = -1;
         corner = c;
+        corner_frame = fr;
       }
     }
   }
