@@ -10,7 +10,8 @@
 //
 // --path-error K also measures E the way the thesis's Table 4.4 defines it: from the length of the shortest path
 // each approximate method traces (Dijkstra, fast marching, flat-exact, merged) to K random vertices, against the
-// exact distance. Untimed, in this process, in full_field mode (paths need the field).
+// exact distance; once as traced, once made locally shortest (set_path_shortening(true)). In this process, in
+// full_field mode (paths need the field), outside the timed runs; the mean time per path of both is reported.
 //
 // Every run of every method is a forked child process (see geodesic_bench_common.h and benchmark/README.md):
 // time measured inside the child, peak memory = the child's peak RSS minus its RSS when the method starts.
@@ -26,6 +27,7 @@
 #include <CGAL/Polyhedral_geodesics_3/geodesic_distance_error.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -175,16 +177,26 @@ struct Cell // one (mesh, method) result
   PG::Geodesic_distance_error error;
   bool has_error = false;
   double path_error = nan_;      // --path-error: mean relative error of the traced path lengths
+  double shortened_path_error = nan_; // the same paths made locally shortest
+  double path_us = nan_, shortened_path_us = nan_; // mean time per path, traced / traced and shortened
   std::size_t paths_measured = 0;
 };
 
 std::string pct(double e) { return std::isfinite(e) ? fmt(100 * e, "%.3g") : "-"; }
 
+struct Path_error
+{
+  double traced = nan_, shortened = nan_; // mean relative error of the path lengths
+  double traced_us = nan_, shortened_us = nan_; // mean microseconds per path
+  std::size_t measured = 0;
+};
+
 // The thesis's eq. 4.4.1 taken literally: the mean over `count` random vertices (not the source, reachable in
-// `reference`) of |length of the traced path - reference| / reference. One run in full_field mode.
+// `reference`) of |length of the traced path - reference| / reference. One run in full_field mode; the same
+// paths traced as the method gives them, then made locally shortest.
 template <class Geodesics, class Make>
-double traced_path_error(Make make, Vertex source, const std::vector<double>& reference,
-                         std::size_t count, std::uint64_t seed, std::size_t& measured)
+Path_error traced_path_error(Make make, Vertex source, const std::vector<double>& reference,
+                             std::size_t count, std::uint64_t seed)
 {
   Geodesics geodesics = make();
   geodesics.add_source(source);
@@ -196,42 +208,52 @@ double traced_path_error(Make make, Vertex source, const std::vector<double>& re
   const std::size_t k = std::min(count, candidates.size());
   for(std::size_t i = 0; i < k; ++i) // partial Fisher-Yates: the first k are a uniform sample
     std::swap(candidates[i], candidates[i + std::size_t(rng() % (candidates.size() - i))]);
-  double sum = 0;
-  measured = 0;
+  Path_error result;
   std::vector<Mesh::Point> points;
-  for(std::size_t i = 0; i < k; ++i) {
-    const Vertex v(Mesh::size_type(candidates[i]));
-    points.clear();
-    geodesics.shortest_path_points(v, std::back_inserter(points));
-    double length = 0;
-    for(std::size_t j = 1; j < points.size(); ++j) length += std::sqrt(CGAL::squared_distance(points[j - 1], points[j]));
-    if(points.empty() || !std::isfinite(length)) continue;
-    sum += std::abs(length - reference[candidates[i]]) / reference[candidates[i]];
-    ++measured;
+  for(int shortened = 0; shortened < 2; ++shortened) {
+    geodesics.set_path_shortening(shortened == 1);
+    double sum = 0;
+    std::size_t measured = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for(std::size_t i = 0; i < k; ++i) {
+      const Vertex v(Mesh::size_type(candidates[i]));
+      points.clear();
+      geodesics.shortest_path_points(v, std::back_inserter(points));
+      double length = 0;
+      for(std::size_t j = 1; j < points.size(); ++j) length += std::sqrt(CGAL::squared_distance(points[j - 1], points[j]));
+      if(points.empty() || !std::isfinite(length)) continue;
+      sum += std::abs(length - reference[candidates[i]]) / reference[candidates[i]];
+      ++measured;
+    }
+    const double us = 1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if(measured == 0) continue;
+    (shortened ? result.shortened : result.traced) = sum / double(measured);
+    (shortened ? result.shortened_us : result.traced_us) = us / double(k);
+    result.measured = measured;
   }
-  return measured ? sum / double(measured) : nan_;
+  return result;
 }
 
-double traced_path_error(const Method& m, const Mesh& mesh, Vertex source, double mean_edge,
-                         const std::vector<double>& reference, std::size_t count, std::uint64_t seed, std::size_t& measured)
+Path_error traced_path_error(const Method& m, const Mesh& mesh, Vertex source, double mean_edge,
+                             const std::vector<double>& reference, std::size_t count, std::uint64_t seed)
 {
   const PG::Geodesic_memory_mode mode = PG::Geodesic_memory_mode::full_field;
   switch(m.kind) {
   case DIJKSTRA:
     return traced_path_error<PG::Dijkstra_geodesic_distances_3<Mesh>>(
-      [&] { return PG::Dijkstra_geodesic_distances_3<Mesh>(mesh, mode); }, source, reference, count, seed, measured);
+      [&] { return PG::Dijkstra_geodesic_distances_3<Mesh>(mesh, mode); }, source, reference, count, seed);
   case FMM:
     return traced_path_error<PG::Fast_marching_geodesic_distances_3<Mesh>>(
-      [&] { return PG::Fast_marching_geodesic_distances_3<Mesh>(mesh, mode); }, source, reference, count, seed, measured);
+      [&] { return PG::Fast_marching_geodesic_distances_3<Mesh>(mesh, mode); }, source, reference, count, seed);
   case FLAT:
     return traced_path_error<PG::Flat_exact_geodesic_distances_3<Mesh>>(
-      [&] { return PG::Flat_exact_geodesic_distances_3<Mesh>(mesh, mode); }, source, reference, count, seed, measured);
+      [&] { return PG::Flat_exact_geodesic_distances_3<Mesh>(mesh, mode); }, source, reference, count, seed);
   case MERGED:
     return traced_path_error<PG::Merged_window_geodesic_distances_3<Mesh>>(
       [&] { return PG::Merged_window_geodesic_distances_3<Mesh>(mesh, m.eps * mean_edge, mode); }, source, reference, count,
-      seed, measured);
+      seed);
   default:
-    return nan_; // heat: no paths; exact: the reference itself
+    return Path_error(); // heat: no paths; exact: the reference itself
   }
 }
 std::string fmt_time(double t) { return std::isfinite(t) ? fmt(t, "%.3g") : "-"; }
@@ -243,7 +265,8 @@ void usage()
                "         [--mem-limit-mib M] [--path-error K] [--csv FILE] [--list]\n"
                "  methods: dijkstra fmm heat heat-idt flat-exact merged exact (default: all)\n"
                "  tolerances of merged, in mean edge lengths (default 0.1,0.01,0.001,0.0001)\n"
-               "  --path-error K: also E of the traced path lengths to K random vertices (thesis Table 4.4; untimed)\n"
+               "  --path-error K: also E of the traced path lengths to K random vertices (thesis Table 4.4), as traced and\n"
+               "                  made locally shortest, with the mean time per path (outside the timed runs)\n"
                "  built-in meshes: ChineseDragon-10kv mannequin-devil armadillo bunny00 refined_elephant\n"
                "                   mannequin-devil-loop1 armadillo-loop1 bunny00-loop1 bunny00-loop2\n";
 }
@@ -447,11 +470,17 @@ int main(int argc, char** argv)
           c.has_error = true;
           if(c.error.unreachable_mismatches) note << c.error.unreachable_mismatches << " vertices reachable in one only; ";
           if(path_error_count > 0 && !c.is_reference) {
-            c.path_error = traced_path_error(methods[k], mesh, source, mean_edge, *reference, path_error_count, seed,
-                                             c.paths_measured);
+            const Path_error pe = traced_path_error(methods[k], mesh, source, mean_edge, *reference, path_error_count, seed);
+            c.path_error = pe.traced;
+            c.shortened_path_error = pe.shortened;
+            c.path_us = pe.traced_us;
+            c.shortened_path_us = pe.shortened_us;
+            c.paths_measured = pe.measured;
             if(std::isfinite(c.path_error))
               std::cout << "  " << spec.name << ", " << methods[k].name() << ": E of traced path lengths "
-                        << pct(c.path_error) << "% (" << c.paths_measured << " paths)\n" << std::flush;
+                        << pct(c.path_error) << "% (" << fmt(c.path_us, "%.3g") << " us/path), locally shortest "
+                        << pct(c.shortened_path_error) << "% (" << fmt(c.shortened_path_us, "%.3g") << " us/path; "
+                        << c.paths_measured << " paths)\n" << std::flush;
           }
         }
       }
@@ -498,9 +527,11 @@ int main(int argc, char** argv)
     mdcs_bench::Table path_table(mem_header);
     for(const auto& row : table_rows) {
       std::vector<std::string> line = {row.front().mesh};
-      for(const Cell& c : row) line.push_back(std::isfinite(c.path_error) ? pct(c.path_error) : "-");
+      for(const Cell& c : row)
+        line.push_back(std::isfinite(c.path_error) ? pct(c.path_error) + " / " + pct(c.shortened_path_error) : "-");
       path_table.add_row(line);
     }
+    std::cout << "(traced / made locally shortest)\n";
     path_table.print();
   }
 
@@ -518,7 +549,8 @@ int main(int argc, char** argv)
                                "method", "tolerance_edges", "tolerance_abs", "time_s", "setup_s", "solve_s", "peak_MiB",
                                "E_mean_rel_pct", "E_max_rel_pct", "max_abs_err", "compared", "unreachable_mismatches",
                                "reference", "runs_ok", "windows_created", "windows_merged", "vertex_updates",
-                               "dag_rejections", "note", "E_path_pct", "paths_measured"});
+                               "dag_rejections", "note", "E_path_pct", "paths_measured",
+                               "E_path_shortened_pct", "path_us", "shortened_path_us"});
   for(const auto& row : table_rows)
     for(const Cell& c : row) {
       std::string note = c.note;
@@ -539,7 +571,10 @@ int main(int argc, char** argv)
                          c.ran ? std::to_string(c.last.windows_merged) : "", c.ran ? std::to_string(c.last.vertex_updates) : "",
                          c.ran ? std::to_string(c.last.dag_rejections) : "", note,
                          std::isfinite(c.path_error) ? fmt(100 * c.path_error, "%.6g") : "",
-                         c.paths_measured ? std::to_string(c.paths_measured) : ""});
+                         c.paths_measured ? std::to_string(c.paths_measured) : "",
+                         std::isfinite(c.shortened_path_error) ? fmt(100 * c.shortened_path_error, "%.6g") : "",
+                         std::isfinite(c.path_us) ? fmt(c.path_us, "%.4g") : "",
+                         std::isfinite(c.shortened_path_us) ? fmt(c.shortened_path_us, "%.4g") : ""});
     }
   write_table_csv(csv_table, o.csv);
 

@@ -67,6 +67,9 @@ inline const char* geodesics_usage()
     "                       no paths, no --limit or --stop-at-targets\n"
     "  --limit D          stop the propagation at geodesic distance D (farther vertices: unreachable)\n"
     "  --stop-at-targets  stop as soon as the target distances are final (other vertices may stay unreachable)\n"
+    "  --shorten-paths    make each path locally shortest (straight in every unfolding, bending only at saddle\n"
+    "                     and border vertices; set_path_shortening): for the approximate methods, whose traced\n"
+    "                     paths bend where a geodesic does not\n"
     "  --memory MODE      full (default): the whole distance field, needed for paths | distances: vertex\n"
     "                     distances only, less memory, no paths\n"
     "  --view X,Y,Z       direction from the mesh towards the viewer (default 1,1,1; orthographic projection)\n"
@@ -171,6 +174,7 @@ struct Geodesics_settings
   Geo_method method;
   bool compare_exact = false;
   bool compare_cgal = false;
+  bool shorten_paths = false;
   std::string output = "mdcs-output";
   bool quiet = false;
 };
@@ -376,6 +380,8 @@ inline Geodesics_settings parse_geodesics_settings(const Options& o)
   o.text("compare-exact", "");
   s.compare_cgal = o.has("compare-cgal");
   o.text("compare-cgal", "");
+  s.shorten_paths = o.has("shorten-paths");
+  o.text("shorten-paths", "");
   s.output = o.text("output", s.output);
   s.quiet = o.has("quiet");
   o.text("quiet", "");
@@ -423,6 +429,7 @@ void run_geodesic_class(Make make, const Geo_mesh& mesh, const Geodesics_setting
   run.find_farthest();
 
   // Targets: distances and shortest paths.
+  geodesics.set_path_shortening(s.shorten_paths);
   for(const Geo_location& loc : run.wanted_targets(targets)) {
     Geodesic_target_report r;
     r.where = loc;
@@ -724,7 +731,8 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
     else if(!s.full_field) sum << ", no path (--memory distances)";
     else if(!t.path_error.empty()) sum << ", path tracing FAILED: " << t.path_error;
     else if(t.path.empty()) sum << ", no path";
-    else sum << ", path length " << t.path_length << " (" << t.path_points << " points, relative difference to the distance "
+    else sum << ", path length " << t.path_length << (s.shorten_paths ? " (made locally shortest)" : "") << " ("
+             << t.path_points << " points, relative difference to the distance "
              << std::setprecision(3) << std::abs(t.path_length - t.distance) / std::max(t.distance, 1e-300) << std::setprecision(10) << ")";
     sum << "\n";
   }

@@ -89,6 +89,10 @@ public:
   /// the path from `target` to its nearest source, as points or as a `GeodesicPathVisitor` sequence
   template <class OutputIterator> OutputIterator shortest_path_points(vertex_descriptor target, OutputIterator out);
   template <class Visitor> void shortest_path_sequence(vertex_descriptor target, Visitor& visitor);
+  /// makes every reported path locally shortest first (straight in every unfolding, through saddle and border
+  /// vertices only), keeping its ends; off by default; the distances do not change
+  void set_path_shortening(bool on);
+  bool path_shortening() const;
   /// counters of the last propagation
   const Geodesic_statistics& statistics() const;
 };

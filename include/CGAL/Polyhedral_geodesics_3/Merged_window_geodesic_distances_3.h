@@ -44,7 +44,8 @@ namespace Polyhedral_geodesics_3 {
     value on an edge is at least the exact distance there, and propagation only adds straight segments;
   - the thesis's dependence DAG stays acyclic by construction: only windows that have not propagated are
     merged, and a window's descendants cannot undercut it, so no window is ever replaced by its own
-    descendants and path tracing always descends to a source;
+    descendants and path tracing always descends to a source; `set_path_shortening(true)` straightens the
+    paths where merged windows bend them;
   - the error of a vertex grows with the number of merges on the way from its source (each adds at most
     `merge_tolerance`); the measured trade-off is in the package manual. Tolerance 0 gives the exact result
     bit for bit.

@@ -28,6 +28,7 @@
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/path_shortening.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
@@ -153,6 +154,16 @@ public:
 
   Geodesic_memory_mode memory_mode() const { return mode_; }
 
+  /// When `on`, every path that `shortest_path_points()` and `shortest_path_sequence()` report is first made
+  /// locally shortest: straight in every unfolding of the faces it crosses, and through a vertex only where the
+  /// angle on both sides is at least pi (a geodesic of the polyhedral surface). Its ends stay, it is never
+  /// longer than the traced path, and it keeps the traced path's way around the surface's features (it is not
+  /// necessarily the shortest path overall). Off by default; meant for the approximate classes, whose traced
+  /// paths bend where a geodesic does not (the exact class's paths are already locally shortest). The distances
+  /// do not change.
+  void set_path_shortening(bool on) { shorten_paths_ = on; }
+  bool path_shortening() const { return shorten_paths_; }
+
   void set_memory_mode(Geodesic_memory_mode mode)
   {
     mode_ = mode;
@@ -257,7 +268,7 @@ public:
     require_full_field("shortest_path_points");
     check_barycentric(target.second, "shortest_path_points");
     compute();
-    engine_->trace_path(face_index(target.first), target.second, [&](const Geodesic_path_node<FT>& node) {
+    for_each_path_node(target, [&](const Geodesic_path_node<FT>& node) {
       *out++ = Point_3(to_double_value(node.point[0]), to_double_value(node.point[1]),
                        to_double_value(node.point[2]));
     });
@@ -278,7 +289,7 @@ public:
     require_full_field("shortest_path_sequence");
     check_barycentric(target.second, "shortest_path_sequence");
     compute();
-    engine_->trace_path(face_index(target.first), target.second, [&](const Geodesic_path_node<FT>& node) {
+    for_each_path_node(target, [&](const Geodesic_path_node<FT>& node) {
       switch(node.kind) {
       case Geodesic_path_node<FT>::VERTEX:
         visitor(vertex_of(node.index));
@@ -332,6 +343,24 @@ private:
                              " needs Geodesic_memory_mode::full_field (the object was built with distances_only)");
   }
 
+  // The engine's path from `target`, shortened first if asked for.
+  template <class Emit>
+  void for_each_path_node(const Face_location& target, Emit emit)
+  {
+    if(!shorten_paths_) {
+      engine_->trace_path(face_index(target.first), target.second, emit);
+      return;
+    }
+    path_nodes_.clear();
+    engine_->trace_path(face_index(target.first), target.second,
+                        [&](const Geodesic_path_node<FT>& node) { path_nodes_.push_back(node); });
+    if(!shortener_)
+      shortener_.reset(new Geodesic_path_shortener<FT>(mesh_));
+    shortener_->shorten(path_nodes_);
+    for(const Geodesic_path_node<FT>& node : path_nodes_)
+      emit(node);
+  }
+
   static void check_barycentric(const std::array<FT, 3>& b, const char* what)
   {
     const double b0 = to_double_value(b[0]), b1 = to_double_value(b[1]),
@@ -368,6 +397,9 @@ private:
   FT limit_ = FT(0);
   bool has_limit_ = false;
   bool computed_ = false;
+  bool shorten_paths_ = false;
+  std::vector<Geodesic_path_node<FT>> path_nodes_;
+  std::unique_ptr<Geodesic_path_shortener<FT>> shortener_;
 };
 
 } // namespace internal
