@@ -138,6 +138,12 @@ void check_agrees_with_double()
     gm.shortest_path_points(target, std::back_inserter(path));
     CHECK(path.size() >= 2);
     CHECK(MDCS_test::relative_difference(MDCS_test::path_length(path), as_double(gm.distance(target)), floor_value) <= 1e-9);
+    // made locally shortest in high precision (set_path_shortening): already a geodesic, its length stays
+    gm.set_path_shortening(true);
+    std::vector<Point_3> shortened;
+    gm.shortest_path_points(target, std::back_inserter(shortened));
+    CHECK(shortened.size() >= 2);
+    CHECK(MDCS_test::relative_difference(MDCS_test::path_length(shortened), as_double(gm.distance(target)), floor_value) <= 1e-9);
     CHECK(gm.statistics().windows_created > 0);
   }
 }
