@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -66,14 +67,16 @@ std::vector<double> distances(Geodesics& g, const Mesh& m)
 // Runs the vertex-oriented schedule and the window propagation (full field) from the same sources and
 // compares the vertex distances (relative 1e-12, absolute floor 1e-12 of the diagonal), the unreachable
 // vertices, and the nearest sources where the sources are not tied. Returns the vertex-oriented distances.
-std::vector<double> check_against_windows(const Mesh& m, const std::vector<Source>& sources, const std::string& what)
+// `zero_area_faces`: the mesh has a face of zero area, where distances_only runs use the window propagation too.
+std::vector<double> check_against_windows(const Mesh& m, const std::vector<Source>& sources, const std::string& what,
+                                          bool zero_area_faces = false)
 {
   INFO(what);
   Geodesics fast(m, PG::Geodesic_memory_mode::distances_only), full(m);
   add_sources(fast, sources);
   add_sources(full, sources);
   const std::vector<double> a = distances(full, m), b = distances(fast, m);
-  CHECK(fast.used_vertex_oriented_propagation());
+  CHECK(fast.used_vertex_oriented_propagation() == !zero_area_faces);
   CHECK_FALSE(full.used_vertex_oriented_propagation());
   const double floor_value = tolerance * MDCS_test::bbox_diagonal(m);
   const auto cmp = MDCS_test::compare_distances(a, b, floor_value);
@@ -103,9 +106,10 @@ std::vector<double> check_against_windows(const Mesh& m, const std::vector<Sourc
   return b;
 }
 
-void check_flat(const Mesh& m, const std::vector<Source>& sources, const std::vector<Vec3>& points, const std::string& what)
+void check_flat(const Mesh& m, const std::vector<Source>& sources, const std::vector<Vec3>& points, const std::string& what,
+                bool zero_area_faces = false)
 {
-  const std::vector<double> d = check_against_windows(m, sources, what);
+  const std::vector<double> d = check_against_windows(m, sources, what, zero_area_faces);
   INFO(what);
   std::vector<double> e;
   for(vertex_descriptor v : vertices(m)) {
@@ -183,18 +187,18 @@ TEST_CASE("vertex-oriented exact geodesics: degenerate flat meshes", "[geodesics
     std::array<std::size_t, 2> coincident;
     const Mesh m = make_mesh(MDCS_test::grid_with_zero_length_edge<Point_3>(6, coincident));
     const vertex_descriptor c0(static_cast<Mesh::size_type>(coincident[0]));
-    check_flat(m, {at(vertex_descriptor(0))}, {Vec3{0, 0, 0}}, "zero-length edge, source at the corner");
-    check_flat(m, {at(c0)}, {MDCS_test::vertex_vec3(m, c0)}, "zero-length edge, source at a coincident vertex");
+    check_flat(m, {at(vertex_descriptor(0))}, {Vec3{0, 0, 0}}, "zero-length edge, source at the corner", true);
+    check_flat(m, {at(c0)}, {MDCS_test::vertex_vec3(m, c0)}, "zero-length edge, source at a coincident vertex", true);
     const auto loc = MDCS_test::random_face_locations(m, 1, 4)[0];
     check_flat(m, {at(Face_location(loc.first, loc.second))}, {MDCS_test::location_point(m, loc.first, loc.second)},
-               "zero-length edge, source inside a face");
+               "zero-length edge, source inside a face", true);
   }
   {
     const Mesh m = make_mesh(MDCS_test::grid_with_cap_triangle<Point_3>(6));
     for(const Vec3 sp : {Vec3{0, 0, 0}, Vec3{1, 1, 0}})
-      check_flat(m, {at(MDCS_test::nearest_vertex(m, sp))}, {sp}, "zero-area triangle");
+      check_flat(m, {at(MDCS_test::nearest_vertex(m, sp))}, {sp}, "zero-area triangle", true);
     const vertex_descriptor mid(static_cast<Mesh::size_type>(num_vertices(m) - 1));
-    check_flat(m, {at(mid)}, {MDCS_test::vertex_vec3(m, mid)}, "zero-area triangle, source at its middle vertex");
+    check_flat(m, {at(mid)}, {MDCS_test::vertex_vec3(m, mid)}, "zero-area triangle, source at its middle vertex", true);
   }
   for(double width : {1e-3, 1e-6, 1e-9}) {
     const Mesh m = make_mesh(MDCS_test::needle_strip<Point_3>(40, width));
@@ -222,6 +226,40 @@ TEST_CASE("vertex-oriented exact geodesics: degenerate flat meshes", "[geodesics
       INFO("square with a hole, vertex-oriented vs analytic: " << cmp);
       CHECK(cmp.ok(tolerance));
     }
+  }
+}
+
+// CGAL's degtri_sliding.off (its 8 vertices and 8 faces, here so that the test needs no data): four faces of zero
+// area stacked on the x axis join a lower and an upper triangle pair. A shortest path runs along their line:
+// from vertex 2 to vertex 7 it is sqrt(5), from vertex 3 to vertex 5 it is 1. The vertex-oriented schedule gave 3
+// and 3 there, so distances_only runs on a mesh with a zero-area face use the window propagation. Every small
+// perturbation of the mesh (faces of positive area, where the vertex-oriented schedule runs) gives the same
+// values to within the perturbation.
+TEST_CASE("vertex-oriented exact geodesics: a stack of zero-area faces (degtri_sliding)",
+          "[geodesics][exact][vertex_oriented][robustness]")
+{
+  MDCS_test::Triangle_soup<Point_3> soup;
+  soup.points = {Point_3(4, -2, 0), Point_3(6, 0, 0), Point_3(4, 0, 0), Point_3(2, 0, 0),
+                 Point_3(1, 0, 0),  Point_3(3, 0, 0), Point_3(5, 0, 0), Point_3(3, 2, 0)};
+  soup.triangles = {{0, 1, 2}, {0, 2, 3}, {3, 2, 4}, {2, 1, 6}, {2, 6, 4}, {4, 6, 5}, {5, 6, 7}, {4, 5, 7}};
+  const Mesh m = make_mesh(soup);
+  REQUIRE(num_vertices(m) == 8);
+  std::vector<std::vector<double>> by_source;
+  for(vertex_descriptor s : vertices(m))
+    by_source.push_back(check_against_windows(m, {at(s)}, "degtri_sliding, source " + std::to_string(std::size_t(s)), true));
+  CHECK(std::abs(by_source[2][7] - std::sqrt(5.0)) <= 1e-12);
+  CHECK(std::abs(by_source[3][5] - 1.0) <= 1e-12);
+  // the same mesh with every coordinate moved by up to 1e-7: positive areas, the vertex-oriented schedule
+  MDCS_test::Triangle_soup<Point_3> moved = soup;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> jitter(-1e-7, 1e-7);
+  for(Point_3& p : moved.points)
+    p = Point_3(p.x() + jitter(rng), p.y() + jitter(rng), p.z() + jitter(rng));
+  const Mesh mm = make_mesh(moved);
+  for(vertex_descriptor s : vertices(mm)) {
+    const std::vector<double> d = check_against_windows(mm, {at(s)}, "degtri_sliding moved by 1e-7", false);
+    for(std::size_t v = 0; v < d.size(); ++v)
+      CHECK(std::abs(d[v] - by_source[std::size_t(s)][v]) <= 1e-6);
   }
 }
 

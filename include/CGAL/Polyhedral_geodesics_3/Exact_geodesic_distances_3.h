@@ -94,7 +94,10 @@ public:
   {}
 
   /// Whether `distances_only` runs without a distance limit or stop targets use the vertex-oriented
-  /// schedule (default `true`, several times faster) or the window propagation of the full field.
+  /// schedule (default `true`, several times faster) or the window propagation of the full field. On a mesh
+  /// with a face of zero area (collinear corners or a zero-length edge) the window propagation runs anyway:
+  /// the vertex-oriented schedule misses paths along the line of such faces (`used_vertex_oriented_propagation()`
+  /// tells which one ran).
   void set_vertex_oriented_propagation(bool enable)
   {
     this->engine().set_vertex_oriented_allowed(enable);
