@@ -46,11 +46,7 @@ const double inf = std::numeric_limits<double>::infinity();
 
 Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
 
-struct Named_soup
-{
-  std::string name;
-  MDCS_test::Triangle_soup<Point_3> soup;
-};
+typedef MDCS_test::Named_soup<Point_3> Named_soup;
 
 // the nodes of a path (visitor of shortest_path_sequence): their kinds, the vertices, the faces that contain
 // each node (from the reported descriptors: MDCS_test::is_surface_path() finds them geometrically, by brute force

@@ -78,11 +78,7 @@ std::size_t index_of(const Mesh& m, vertex_descriptor v)
   return std::size_t(std::distance(vertices(m).begin(), std::find(vertices(m).begin(), vertices(m).end(), v)));
 }
 
-struct Named_soup
-{
-  std::string name;
-  MDCS_test::Triangle_soup<Point_3> soup;
-};
+typedef MDCS_test::Named_soup<Point_3> Named_soup;
 
 std::vector<Named_soup> assorted_meshes()
 {

@@ -51,11 +51,7 @@ face_descriptor face_of_vertex(const Mesh& m, vertex_descriptor v)
   return face_descriptor();
 }
 
-struct Named_soup
-{
-  std::string name;
-  MDCS_test::Triangle_soup<Point_3> soup;
-};
+typedef MDCS_test::Named_soup<Point_3> Named_soup;
 
 std::vector<Named_soup> flat_meshes()
 {

@@ -42,11 +42,7 @@ using MDCS_test::Vec3;
 const double tolerance = 1e-12;
 const double inf = MDCS_test::inf();
 
-struct Named_soup
-{
-  std::string name;
-  MDCS_test::Triangle_soup<Point_3> soup;
-};
+typedef MDCS_test::Named_soup<Point_3> Named_soup;
 
 // Curved test meshes: closed with saddles, open terrain with saddles, convex closed, flat with a hole.
 std::vector<Named_soup> curved_meshes()

@@ -38,11 +38,7 @@ namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 using MDCS_test::Vec3;
 
-struct Named_soup
-{
-  std::string name;
-  MDCS_test::Triangle_soup<Point_3> soup;
-};
+typedef MDCS_test::Named_soup<Point_3> Named_soup;
 
 template <class M, class P>
 M make(const MDCS_test::Triangle_soup<P>& soup)

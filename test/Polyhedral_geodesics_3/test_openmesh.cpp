@@ -48,11 +48,7 @@ typedef OpenMesh::TriMesh_ArrayKernelT<Double_traits> Open_mesh;
 
 namespace PG = CGAL::Polyhedral_geodesics_3;
 
-struct Named_soup
-{
-  std::string name;
-  MDCS_test::Triangle_soup<Point_3> soup;
-};
+typedef MDCS_test::Named_soup<Point_3> Named_soup;
 
 std::vector<Named_soup> test_meshes()
 {

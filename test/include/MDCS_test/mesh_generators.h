@@ -13,6 +13,7 @@
 #include <map>
 #include <stdexcept>
 #include <utility>
+#include <string>
 #include <vector>
 
 namespace MDCS_test {
@@ -30,6 +31,14 @@ struct Triangle_soup
     for(const auto& t : triangles) polygons.push_back({t[0], t[1], t[2]});
     CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   }
+};
+
+// A generated mesh with the name the tests report it by.
+template <class Point_3>
+struct Named_soup
+{
+  std::string name;
+  Triangle_soup<Point_3> soup;
 };
 
 // The planar grid [0, w] x [0, h] in the plane z = 0 with nx x ny squares, each split into two triangles along

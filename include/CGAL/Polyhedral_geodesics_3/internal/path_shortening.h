@@ -156,21 +156,13 @@ private:
     return -1;
   }
 
-  // Whether the item (a vertex or an end) lies in face f: the vertex is a corner, or every corner with a
-  // non-zero barycentric coordinate of the end's point is one.
+  // Whether the item (a vertex or an end) lies in face f. An end on an edge is not an anchor the strips can place.
   bool anchor_in_face(const Item& a, Index f) const
   {
     if(a.kind == VERTEX)
       return corner_slot(f, a.index) >= 0;
     const Node& n = ends_[std::size_t(a.index)];
-    if(n.kind == Node::VERTEX)
-      return corner_slot(f, n.index) >= 0;
-    if(n.kind != Node::FACE)
-      return false;
-    for(int k = 0; k < 3; ++k)
-      if(n.barycentric[std::size_t(k)] != FT(0) && corner_slot(f, mesh_.source(3 * n.index + k)) < 0)
-        return false;
-    return true;
+    return n.kind != Node::EDGE && node_in_face(n, f);
   }
 
   // Whether a path item lies in face f: an anchor in it, or a portal into it.
@@ -523,43 +515,17 @@ private:
 
   // The compact halfedges of the edge between v and w: g from v to w and e from w to v (-1 where the edge has no
   // such halfedge, on the border). Both -1 if v and w are not joined by an edge.
-  void edge_between(Index v, Index w, Index& g, Index& e) const
+  void edge_between(Index v, Index w, Index& g, Index& e)
   {
+    if(star_begin_.empty())
+      build_vertex_star(mesh_, star_begin_, star_);
     g = e = -1;
-    const Index h0 = mesh_.vertex_halfedge[std::size_t(v)];
-    if(h0 < 0)
-      return;
-    auto look = [&](Index h) {
-      if(mesh_.target(h) == w)
-        g = h;
-      if(mesh_.source(Mesh::prev(h)) == w)
-        e = Mesh::prev(h);
-    };
-    // The outgoing halfedges of v: clockwise from h0 (next of twin), and, if a border stops that turn,
-    // counter-clockwise (twin of prev) from h0.
-    Index h = h0;
-    bool closed = false;
-    for(std::size_t guard = 0; guard < 65536; ++guard) {
-      look(h);
-      const Index tw = mesh_.he[std::size_t(h)].twin;
-      if(tw < 0)
-        break;
-      h = Mesh::next(tw);
-      if(h == h0) {
-        closed = true;
-        break;
-      }
-    }
-    if(closed)
-      return;
-    h = h0;
-    for(std::size_t guard = 0; guard < 65536; ++guard) {
-      const Index tp = mesh_.he[std::size_t(Mesh::prev(h))].twin;
-      if(tp < 0 || tp == h0)
-        break;
-      h = tp;
-      look(h);
-    }
+    for(Index k = star_begin_[std::size_t(v)]; k < star_begin_[std::size_t(v) + 1]; ++k)
+      if(mesh_.target(star_[std::size_t(k)]) == w)
+        g = star_[std::size_t(k)];
+    for(Index k = star_begin_[std::size_t(w)]; k < star_begin_[std::size_t(w) + 1]; ++k)
+      if(mesh_.target(star_[std::size_t(k)]) == v)
+        e = star_[std::size_t(k)];
   }
 
   // The direction from v towards the point p of face f (v a corner of f).
@@ -582,7 +548,7 @@ private:
   // end of a turn; counter-clockwise (ccw) or clockwise. A direction along an edge is placed in the face that
   // lets the turn avoid crossing that edge. Returns false if it cannot be placed.
   bool neighbour_direction(const std::vector<Item>& items, std::size_t i, std::size_t j, bool from, bool ccw,
-                           Direction& d) const
+                           Direction& d)
   {
     const Index v = items[i].index;
     const Item& n = items[j];
@@ -669,8 +635,8 @@ private:
         last_opened = false;
         continue;
       }
+      // The side with the smaller angle below pi; its fan of edges becomes portals.
       double best = pi - 1e-9;
-      bool best_ccw = true;
       bool found = false;
       for(bool ccw : {true, false}) {
         Direction in, out;
@@ -679,7 +645,7 @@ private:
         const double angle = turn(in, out, ccw, fan_);
         if(angle < best) {
           best = angle;
-          best_ccw = ccw;
+          best_fan_.swap(fan_);
           found = true;
         }
       }
@@ -687,12 +653,8 @@ private:
         out_.push_back(it);
         continue;
       }
-      Direction in, out;
-      neighbour_direction(items, i, i - 1, true, best_ccw, in);
-      neighbour_direction(items, i, i + 1, false, best_ccw, out);
-      turn(in, out, best_ccw, fan_);
       // Start the new portals at the vertex's side of each edge: the next straightening moves them.
-      for(Index h : fan_)
+      for(Index h : best_fan_)
         out_.push_back(Item{PORTAL, h, mesh_.source(h) == it.index ? FT(0) : FT(1)});
       ++opened;
       last_opened = true;
@@ -708,7 +670,8 @@ private:
   std::vector<P2> left_, right_;
   std::vector<Index> left_id_, right_id_, at_vertex_;
   std::vector<Apex> apex_;
-  std::vector<Index> fan_;
+  std::vector<Index> fan_, best_fan_;
+  std::vector<Index> star_begin_, star_; // the outgoing halfedges of each vertex, built on the first use
 };
 
 } // namespace internal
