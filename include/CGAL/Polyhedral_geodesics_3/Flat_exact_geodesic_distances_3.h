@@ -51,7 +51,10 @@ namespace Polyhedral_geodesics_3 {
     vertices only, which gives values a little too long (measured: 2% at most, never too short) just beyond it;
     a path that crosses a zero-area triangle bends at one of its corners (the distances stay exact).
   - On curved meshes every value is an approximation: one interval per edge cannot represent a distance
-    function made of several windows, and the rebuilt pseudo-sources drift from step to step. The error is
+    function made of several windows, and the rebuilt pseudo-sources drift from step to step. Most exact
+    shortest paths bend at saddle vertices (those to 36-99% of the vertices on 29 curved meshes), in wedges
+    behind them too narrow for the edges to resolve, so the rebuilt fronts are flatter than the real ones and
+    the values mostly a little too long (the manual, *What the tracked windows miss*). The error is
     largest where wavefronts meet behind an obstacle (a hole, a protrusion, the far side of a handle), where the
     single interval oversimplifies the field and the traced geodesics are visibly distorted; values can there be
     too short or too long. Measured mean relative errors against `Exact_geodesic_distances_3` on CGAL's demo

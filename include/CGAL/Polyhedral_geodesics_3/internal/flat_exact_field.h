@@ -126,6 +126,24 @@ public:
   void set_vertex_windows(bool on) { vertex_windows_ = on; }
   // Where two windows meet on an edge (default: the smaller offset). Comparisons and tests.
   void set_window_meeting(Window_meeting rule) { window_meeting_ = rule; }
+  // Comparisons only (bench_flat_exact_window_meeting --true-roots): the window of each vertex given by the
+  // caller instead of tracked. roots[v] is the vertex where the shortest path to v last bends (-1: straight
+  // from its source), for instance from the exact shortest paths; the offset of a window is then the flat-exact
+  // distance of its root, and an edge whose ends have different roots takes the meeting rule. Null: tracked
+  // (default). The vector must outlive the runs.
+  void set_window_roots(const std::vector<Index>* roots)
+  {
+    if(roots != nullptr) {
+      if(roots->size() != mesh_.number_of_vertices)
+        throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: one window root per vertex expected");
+      for(Index r : *roots)
+        if(r < -1 || r >= Index(mesh_.number_of_vertices))
+          throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: a window root is not a vertex of the mesh");
+    }
+    given_roots_ = roots;
+  }
+  // The root of the window of v as tracked (-1: straight from a source, a meeting of two windows, or unreached).
+  Index window_root(Index v) const { return vs_[std::size_t(v)].root; }
   // The relative change that a vertex's fourth and later values must make (default 1e-9, see
   // lowering_tolerance(); 0: only rounding, as for the first three). Tuning and tests.
   void set_settle_tolerance(FT t) { settle_tolerance_ = t > improvement_ ? t : improvement_; }
@@ -326,6 +344,8 @@ protected:
   // thesis's rule. The thesis's zero offset here stays available (set_window_meeting()).
   void edge_window(Index a, Index b, FT& sigma, Index& root) const
   {
+    if(given_roots_ != nullptr)
+      return given_edge_window(a, b, sigma, root);
     const std::size_t ia = std::size_t(a), ib = std::size_t(b);
     if(vs_[ia].root == vs_[ib].root && vs_[ia].offset == vs_[ib].offset) {
       sigma = vs_[ia].offset;
@@ -338,6 +358,26 @@ protected:
       root = b;
     } else {
       sigma = window_meeting_ == Window_meeting::smaller_offset ? (std::min)(vs_[ia].offset, vs_[ib].offset) : FT(0);
+      root = -1;
+    }
+  }
+
+  // edge_window() with the caller's roots (set_window_roots()): the same cases, with the roots given and the
+  // offsets read from the roots' current distances (a root not reached yet counts as a source).
+  void given_edge_window(Index a, Index b, FT& sigma, Index& root) const
+  {
+    const Index ra = (*given_roots_)[std::size_t(a)], rb = (*given_roots_)[std::size_t(b)];
+    auto offset = [this](Index r) {
+      return r < 0 || !reached(r) ? FT(0) : vs_[std::size_t(r)].dist;
+    };
+    if(ra == rb) {
+      sigma = offset(ra);
+      root = ra;
+    } else if(rb == a || ra == b) {
+      root = rb == a ? a : b;
+      sigma = vs_[std::size_t(root)].dist;
+    } else {
+      sigma = window_meeting_ == Window_meeting::smaller_offset ? (std::min)(offset(ra), offset(rb)) : FT(0);
       root = -1;
     }
   }
@@ -528,6 +568,7 @@ protected:
   Queue_key queue_key_ = Queue_key::candidate;
   bool vertex_windows_ = true; // windows rooted at saddle and reflex boundary vertices
   Window_meeting window_meeting_ = Window_meeting::smaller_offset;
+  const std::vector<Index>* given_roots_ = nullptr; // set_window_roots()
 
   // per vertex
   // the hot per-vertex data, together: the distance, the offset of the vertex's window (the distance of its
