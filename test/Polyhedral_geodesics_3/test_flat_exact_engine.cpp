@@ -100,6 +100,17 @@ struct Engine_run
   }
 };
 
+// Two curved meshes for the comparisons of window rules: a bumpy sphere and CGAL's elephant (when found).
+void add_bumpy_sphere_and_elephant(std::vector<std::pair<std::string, Mesh>>& meshes)
+{
+  meshes.emplace_back("bumpy sphere", make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.1, 2)));
+  Mesh elephant;
+  if(MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh("elephant.off"), elephant))
+    meshes.emplace_back("elephant", elephant);
+  else
+    WARN("CGAL's demo meshes not found (MDCS_CGAL_MESH_DIR): the elephant is skipped");
+}
+
 } // namespace
 
 TEST_CASE("flat-exact geodesics: the dependence DAG stays acyclic and every path reaches a source",
@@ -189,12 +200,7 @@ TEST_CASE("flat-exact geodesics: where two windows meet, the smaller offset beat
 {
   // measured E (zero offset -> smaller offset), 2 sources: bumpy sphere 1.00% -> 0.91%, elephant 0.58% -> 0.52%
   std::vector<std::pair<std::string, Mesh>> meshes;
-  meshes.emplace_back("bumpy sphere", make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.1, 2)));
-  Mesh elephant;
-  if(MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh("elephant.off"), elephant))
-    meshes.emplace_back("elephant", elephant);
-  else
-    WARN("CGAL's demo meshes not found (MDCS_CGAL_MESH_DIR): the elephant is skipped");
+  add_bumpy_sphere_and_elephant(meshes);
   for(const auto& named : meshes) {
     INFO(named.first);
     const Mesh& m = named.second;
@@ -274,12 +280,7 @@ TEST_CASE("flat-exact geodesics: the windows of the exact shortest paths given t
   // 0.020%; bumpy sphere 551 / 116 of 642, 0.96% -> 0.71%; elephant 2295 / 528 of 2775, 0.63% -> 0.53%
   std::vector<std::pair<std::string, Mesh>> meshes;
   meshes.emplace_back("square with a hole", make_mesh(MDCS_test::square_with_hole<Point_3>(30, 10, 20, 12, 18)));
-  meshes.emplace_back("bumpy sphere", make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.1, 2)));
-  Mesh elephant;
-  if(MDCS_test::read_mesh(MDCS_test::cgal_demo_mesh("elephant.off"), elephant))
-    meshes.emplace_back("elephant", elephant);
-  else
-    WARN("CGAL's demo meshes not found (MDCS_CGAL_MESH_DIR): the elephant is skipped");
+  add_bumpy_sphere_and_elephant(meshes);
   for(const auto& named : meshes) {
     INFO(named.first);
     const Mesh& m = named.second;
