@@ -280,7 +280,8 @@ int main(int argc, char** argv)
   std::set<std::string> method_names = {"dijkstra", "fmm", "heat", "heat-idt", "flat-exact", "merged", "exact"};
   std::vector<double> tolerances = {1e-1, 1e-2, 1e-3, 1e-4};
   std::uint64_t seed = 1;
-  std::size_t skip_exact_above = 300000;
+  // every built-in mesh: the exact class (distances_only) took 21 s and 254 MiB at 603k vertices
+  std::size_t skip_exact_above = 1000000;
   std::size_t path_error_count = 0;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
