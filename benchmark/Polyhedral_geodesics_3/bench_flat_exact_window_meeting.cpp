@@ -57,12 +57,12 @@ struct Root_sums
 // a path can also pass straight through another vertex, which starts no window).
 struct Last_bend
 {
-  const std::vector<char>& can_bend;
+  const Engine& engine;
   int vertices_seen = 0;
   std::size_t bend = std::size_t(-1);
   void operator()(Vertex v)
   {
-    if(vertices_seen++ >= 1 && bend == std::size_t(-1) && can_bend[std::size_t(v)])
+    if(vertices_seen++ >= 1 && bend == std::size_t(-1) && engine.can_bend_at(int(std::size_t(v))))
       bend = std::size_t(v);
   }
   void operator()(Mesh::Halfedge_index, double) {}
@@ -159,9 +159,6 @@ int main(int argc, char** argv)
     PG::internal::build_geodesic_mesh(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh),
                                       get(CGAL::face_index, mesh), cm, halfedge_of);
     Engine engine(cm);
-    std::vector<char> can_bend(n, 0);
-    for(std::size_t v = 0; v < n; ++v)
-      can_bend[v] = cm.vertex_angle_sum[v] > (cm.vertex_on_boundary[v] ? 1 : 2) * CGAL_PI + 1e-9;
     Error_sums sums[3]; // [0]: zero offset, [1]: smaller offset, [2]: smaller offset with the exact windows
     Root_sums roots_sums;
     std::mt19937_64 rng(seed);
@@ -179,7 +176,7 @@ int main(int argc, char** argv)
         for(std::size_t v = 0; v < n; ++v) {
           if(!(exact[v] > 0) || !std::isfinite(exact[v]))
             continue;
-          Last_bend bend{can_bend};
+          Last_bend bend{engine};
           reference.shortest_path_sequence(Vertex(Mesh::size_type(v)), bend);
           if(bend.bend != std::size_t(-1) && bend.bend != std::size_t(source))
             exact_root[v] = int(bend.bend);

@@ -247,12 +247,12 @@ namespace {
 // straight through another vertex (on a grid's diagonal), which does not start a window.
 struct Last_bend
 {
-  const std::vector<char>& can_bend;
+  const Engine& engine;
   int vertices_seen = 0;
   int bend = -1;
   void operator()(boost::graph_traits<Mesh>::vertex_descriptor v)
   {
-    if(vertices_seen++ >= 1 && bend < 0 && can_bend[std::size_t(v)])
+    if(vertices_seen++ >= 1 && bend < 0 && engine.can_bend_at(int(v)))
       bend = int(v);
   }
   void operator()(halfedge_descriptor, double) {}
@@ -291,16 +291,12 @@ TEST_CASE("flat-exact geodesics: the windows of the exact shortest paths given t
     exact.add_source(*std::next(vertices(m).begin(), source));
     std::vector<double> reference(std::size_t(nv), 0.0);
     std::vector<int> roots(std::size_t(nv), -1);
-    std::vector<char> can_bend(static_cast<std::size_t>(nv));
-    for(int v = 0; v < nv; ++v)
-      can_bend[std::size_t(v)] = run.cm.vertex_angle_sum[std::size_t(v)] >
-                                 (run.cm.vertex_on_boundary[std::size_t(v)] ? 1 : 2) * CGAL_PI + 1e-9;
     std::size_t bent = 0;
     for(auto v : vertices(m)) {
       reference[std::size_t(v)] = exact.distance(v);
       if(int(v) == source)
         continue;
-      Last_bend last{can_bend};
+      Last_bend last{*run.engine};
       exact.shortest_path_sequence(v, last);
       if(last.bend >= 0 && last.bend != source) {
         roots[std::size_t(v)] = last.bend;

@@ -144,6 +144,8 @@ public:
   }
   // The root of the window of v as tracked (-1: straight from a source, a meeting of two windows, or unreached).
   Index window_root(Index v) const { return vs_[std::size_t(v)].root; }
+  // Can shortest paths bend at v (a saddle or a reflex boundary vertex), so that v roots a window?
+  bool can_bend_at(Index v) const { return vertex_is_pseudo_source_[std::size_t(v)] != 0; }
   // The relative change that a vertex's fourth and later values must make (default 1e-9, see
   // lowering_tolerance(); 0: only rounding, as for the first three). Tuning and tests.
   void set_settle_tolerance(FT t) { settle_tolerance_ = t > improvement_ ? t : improvement_; }
