@@ -6,8 +6,9 @@
 //
 // --true-roots adds a diagnosis of the default rule: the windows it tracks against those of the exact shortest
 // paths (where each path to a vertex last bends, at a saddle or boundary vertex), and E when the propagation is
-// given the exact windows instead of tracking its own (the offsets still from its own distances). This traces
-// the exact path to every vertex, which makes the run several times longer.
+// given the exact windows instead of tracking its own (the offsets still from its own distances), and given both
+// the exact windows and their exact offsets (the exact distances of the roots). This traces the exact path to
+// every vertex, which makes the run several times longer.
 //
 //   bench_flat_exact_window_meeting [--meshes a,b,c] [--sources K] [--seed S] [--true-roots] [--mesh-dir DIR]
 //                                   [--extra-dir DIR] [--csv FILE] [--list]
@@ -135,14 +136,15 @@ int main(int argc, char** argv)
     std::cout << "--true-roots: bent = share of the vertices whose exact shortest path bends at a saddle or reflex\n"
               << "boundary vertex; tracked = share in a window rooted at a vertex under the default rule; same = share\n"
               << "whose tracked root is the exact path's last bend (or neither has one); E_true_roots etc. = the default\n"
-              << "rule given the exact paths' windows.\n";
+              << "rule given the exact paths' windows; E_true_offsets etc. = given the exact windows and their exact\n"
+              << "offsets (the exact distances of the roots).\n";
   std::cout << "\n";
   std::vector<std::string> columns = {"mesh", "vertices", "boundary_edges", "sources", "E_zero_pct", "E_smaller_pct",
                                       "ratio", "signed_zero_pct", "signed_smaller_pct", "below_zero_pct",
                                       "below_smaller_pct", "values_per_vertex_zero", "values_per_vertex_smaller"};
   if(true_roots)
     for(const char* c : {"bent_pct", "tracked_pct", "same_window_pct", "E_true_roots_pct", "signed_true_roots_pct",
-                         "below_true_roots_pct"})
+                         "below_true_roots_pct", "E_true_offsets_pct", "signed_true_offsets_pct", "below_true_offsets_pct"})
       columns.push_back(c);
   mdcs_bench::Table table(columns);
   std::size_t better = 0, compared = 0;
@@ -159,7 +161,8 @@ int main(int argc, char** argv)
     PG::internal::build_geodesic_mesh(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh),
                                       get(CGAL::face_index, mesh), cm, halfedge_of);
     Engine engine(cm);
-    Error_sums sums[3]; // [0]: zero offset, [1]: smaller offset, [2]: smaller offset with the exact windows
+    Error_sums sums[4]; // [0]: zero offset, [1]: smaller offset, [2]: smaller offset with the exact windows,
+                        // [3]: the same with the exact offsets of those windows
     Root_sums roots_sums;
     std::mt19937_64 rng(seed);
     for(int k = 0; k < sources; ++k) {
@@ -172,6 +175,10 @@ int main(int argc, char** argv)
       reference.distances(Distance_vector_map{&exact});
       // the last bend of the exact path to every vertex (-1: straight from the source, or unreached)
       std::vector<int> exact_root(n, -1);
+      std::vector<double> exact_offset(n, 0.0); // the exact distances as window offsets (roots are reached)
+      for(std::size_t v = 0; v < n; ++v)
+        if(std::isfinite(exact[v]))
+          exact_offset[v] = exact[v];
       if(true_roots)
         for(std::size_t v = 0; v < n; ++v) {
           if(!(exact[v] > 0) || !std::isfinite(exact[v]))
@@ -181,10 +188,11 @@ int main(int argc, char** argv)
           if(bend.bend != std::size_t(-1) && bend.bend != std::size_t(source))
             exact_root[v] = int(bend.bend);
         }
-      for(int rule = 0; rule < (true_roots ? 3 : 2); ++rule) {
+      for(int rule = 0; rule < (true_roots ? 4 : 2); ++rule) {
         engine.clear();
         engine.set_window_meeting(rule == 0 ? Window_meeting::zero_offset : Window_meeting::smaller_offset);
-        engine.set_window_roots(rule == 2 ? &exact_root : nullptr);
+        engine.set_window_roots(rule >= 2 ? &exact_root : nullptr);
+        engine.set_window_root_offsets(rule == 3 ? &exact_offset : nullptr);
         engine.add_vertex_source(int(std::size_t(source)), 0);
         CGAL::MDCS::No_progress progress;
         engine.run(progress);
@@ -227,11 +235,15 @@ int main(int argc, char** argv)
       row.push_back(fmt(100 * sums[2].mean_relative / K, "%.4f"));
       row.push_back(fmt(100 * sums[2].mean_signed / K, "%+.4f"));
       row.push_back(fmt(100 * sums[2].worst_below, "%.3f"));
+      row.push_back(fmt(100 * sums[3].mean_relative / K, "%.4f"));
+      row.push_back(fmt(100 * sums[3].mean_signed / K, "%+.4f"));
+      row.push_back(fmt(100 * sums[3].worst_below, "%.3f"));
     }
     table.add_row(row);
     std::cout << spec.name << ": E " << fmt(100 * e0, "%.4f") << "% -> " << fmt(100 * e1, "%.4f") << "%";
     if(true_roots)
-      std::cout << " (with the exact paths' windows " << fmt(100 * sums[2].mean_relative / K, "%.4f") << "%)";
+      std::cout << " (with the exact paths' windows " << fmt(100 * sums[2].mean_relative / K, "%.4f")
+                << "%, and their exact offsets " << fmt(100 * sums[3].mean_relative / K, "%.4f") << "%)";
     std::cout << "\n" << std::flush;
   }
   std::cout << "\n";

@@ -7,7 +7,8 @@
 //    distances without vertex windows, a lower error against the exact distances on curved meshes;
 //  - the windows of the exact shortest paths given to the engine (set_window_roots(), a diagnosis): checked
 //    input, an acyclic DAG, the given roots used instead of the tracked ones, a lower error, and on curved meshes
-//    far more exact paths bent at a vertex than tracked windows rooted at one.
+//    far more exact paths bent at a vertex than tracked windows rooted at one; with their exact offsets too
+//    (set_window_root_offsets()), still an acyclic DAG and about the same error.
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/cgal_meshes.h>
@@ -25,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <utility>
@@ -274,6 +276,13 @@ TEST_CASE("flat-exact geodesics: the windows of the exact shortest paths given t
     CHECK_THROWS_AS(run.engine->set_window_roots(&not_a_vertex), std::invalid_argument);
     not_a_vertex[2] = -2;
     CHECK_THROWS_AS(run.engine->set_window_roots(&not_a_vertex), std::invalid_argument);
+    const std::vector<double> wrong_offsets(3, 0.0);
+    CHECK_THROWS_AS(run.engine->set_window_root_offsets(&wrong_offsets), std::invalid_argument);
+    std::vector<double> bad_offsets(run.cm.number_of_vertices, 0.0);
+    bad_offsets[1] = -1.0;
+    CHECK_THROWS_AS(run.engine->set_window_root_offsets(&bad_offsets), std::invalid_argument);
+    bad_offsets[1] = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_AS(run.engine->set_window_root_offsets(&bad_offsets), std::invalid_argument);
   }
   // measured (one source; exact paths bent at a saddle or reflex boundary vertex / tracked windows rooted at a
   // vertex; E tracked -> E with the exact windows): square with a hole 266 / 771 of 916 vertices, 0.033% ->
@@ -323,20 +332,46 @@ TEST_CASE("flat-exact geodesics: the windows of the exact shortest paths given t
     run.run({source}, {});
     CHECK(run.engine->dependence_graph_is_acyclic());
     CHECK(run.lost_paths() == 0);
-    const double e_given = error(distances());
+    const std::vector<double> given = distances();
+    const double e_given = error(given);
+    // the same windows with their exact offsets (the exact distances of the roots): the DAG stays acyclic and
+    // every path reaches a source, the offsets are used, and the error stays about the same: what the tracked
+    // windows miss is where the paths bend, not how far their roots are
+    run.engine->set_window_root_offsets(&reference);
+    run.run({source}, {});
+    CHECK(run.engine->dependence_graph_is_acyclic());
+    CHECK(run.lost_paths() == 0);
+    const std::vector<double> given_offsets = distances();
+    const double e_given_offsets = error(given_offsets);
+    if(named.first == "square with a hole") {
+      // planar: the flat-exact distances of the roots are already exact, so nothing changes beyond rounding
+      double largest_change = 0, largest = 0;
+      for(int v = 0; v < nv; ++v) {
+        largest_change = (std::max)(largest_change, std::abs(given_offsets[std::size_t(v)] - given[std::size_t(v)]));
+        largest = (std::max)(largest, reference[std::size_t(v)]);
+      }
+      CHECK(largest_change <= 1e-12 * largest);
+    } else {
+      CHECK(given_offsets != given);
+    }
+    CHECK(e_given_offsets > 0.8 * e_given);
     // no window anywhere given: the same distances as without vertex windows, so the given roots replace the
     // tracked ones
     const std::vector<int> none(std::size_t(nv), -1);
     run.engine->set_window_roots(&none);
     run.run({source}, {});
     const std::vector<double> given_none = distances();
+    run.engine->set_window_root_offsets(nullptr);
+    run.run({source}, {});
+    CHECK(distances() == given_none); // with no root anywhere, the offsets are not used
     run.engine->set_window_roots(nullptr);
     run.engine->set_vertex_windows(false);
     run.run({source}, {});
     CHECK(distances() == given_none);
     run.engine->set_vertex_windows(true);
     INFO("exact paths bent at a vertex: " << bent << " of " << nv << ", tracked windows rooted at a vertex: " << tracked
-                                          << "; E tracked " << e_tracked << ", with the exact windows " << e_given);
+                                          << "; E tracked " << e_tracked << ", with the exact windows " << e_given
+                                          << ", with their exact offsets too " << e_given_offsets);
     CHECK(e_given < e_tracked);
     // on curved meshes most exact paths bend at a saddle, and the tracked windows miss most of these bends
     if(named.first != "square with a hole")

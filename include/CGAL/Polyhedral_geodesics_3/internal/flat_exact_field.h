@@ -142,6 +142,20 @@ public:
     }
     given_roots_ = roots;
   }
+  // Comparisons only, with set_window_roots(): the offset of the window rooted at r is offsets[r] (for instance
+  // the exact distance of r) instead of the flat-exact distance of r. Null: the flat-exact distances (default).
+  // Ignored without given roots. The vector must outlive the runs.
+  void set_window_root_offsets(const std::vector<FT>* offsets)
+  {
+    if(offsets != nullptr) {
+      if(offsets->size() != mesh_.number_of_vertices)
+        throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: one window offset per vertex expected");
+      for(const FT& sigma : *offsets)
+        if(!(sigma >= FT(0))) // also NaN
+          throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: a window offset is negative or not a number");
+    }
+    given_offsets_ = offsets;
+  }
   // The root of the window of v as tracked (-1: straight from a source, a meeting of two windows, or unreached).
   Index window_root(Index v) const { return vs_[std::size_t(v)].root; }
   // Can shortest paths bend at v (a saddle or a reflex boundary vertex), so that v roots a window?
@@ -365,11 +379,14 @@ protected:
   }
 
   // edge_window() with the caller's roots (set_window_roots()): the same cases, with the roots given and the
-  // offsets read from the roots' current distances (a root not reached yet counts as a source).
+  // offsets read from the roots' current distances (a root not reached yet counts as a source), or given too
+  // (set_window_root_offsets()).
   void given_edge_window(Index a, Index b, FT& sigma, Index& root) const
   {
     const Index ra = (*given_roots_)[std::size_t(a)], rb = (*given_roots_)[std::size_t(b)];
     auto offset = [this](Index r) {
+      if(r >= 0 && given_offsets_ != nullptr)
+        return (*given_offsets_)[std::size_t(r)];
       return r < 0 || !reached(r) ? FT(0) : vs_[std::size_t(r)].dist;
     };
     if(ra == rb) {
@@ -377,7 +394,7 @@ protected:
       root = ra;
     } else if(rb == a || ra == b) {
       root = rb == a ? a : b;
-      sigma = vs_[std::size_t(root)].dist;
+      sigma = offset(root);
     } else {
       sigma = window_meeting_ == Window_meeting::smaller_offset ? (std::min)(offset(ra), offset(rb)) : FT(0);
       root = -1;
@@ -571,6 +588,7 @@ protected:
   bool vertex_windows_ = true; // windows rooted at saddle and reflex boundary vertices
   Window_meeting window_meeting_ = Window_meeting::smaller_offset;
   const std::vector<Index>* given_roots_ = nullptr; // set_window_roots()
+  const std::vector<FT>* given_offsets_ = nullptr;  // set_window_root_offsets()
 
   // per vertex
   // the hot per-vertex data, together: the distance, the offset of the vertex's window (the distance of its
