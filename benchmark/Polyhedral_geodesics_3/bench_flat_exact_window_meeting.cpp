@@ -175,10 +175,6 @@ int main(int argc, char** argv)
       reference.distances(Distance_vector_map{&exact});
       // the last bend of the exact path to every vertex (-1: straight from the source, or unreached)
       std::vector<int> exact_root(n, -1);
-      std::vector<double> exact_offset(n, 0.0); // the exact distances as window offsets (roots are reached)
-      for(std::size_t v = 0; v < n; ++v)
-        if(std::isfinite(exact[v]))
-          exact_offset[v] = exact[v];
       if(true_roots)
         for(std::size_t v = 0; v < n; ++v) {
           if(!(exact[v] > 0) || !std::isfinite(exact[v]))
@@ -192,7 +188,7 @@ int main(int argc, char** argv)
         engine.clear();
         engine.set_window_meeting(rule == 0 ? Window_meeting::zero_offset : Window_meeting::smaller_offset);
         engine.set_window_roots(rule >= 2 ? &exact_root : nullptr);
-        engine.set_window_root_offsets(rule == 3 ? &exact_offset : nullptr);
+        engine.set_window_root_offsets(rule == 3 ? &exact : nullptr); // the exact distances (+inf only off the roots)
         engine.add_vertex_source(int(std::size_t(source)), 0);
         CGAL::MDCS::No_progress progress;
         engine.run(progress);
