@@ -1,0 +1,257 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The one concurrency convention of MDCS: CGAL's concurrency tags plus a thread count, on TBB when the program is
+// linked with it (CGAL::TBB_support defines CGAL_LINKED_WITH_TBB), sequential otherwise. Every package runs its
+// parallel loops through this header; none carries its own thread pool.
+
+#ifndef CGAL_MDCS_CONCURRENCY_H
+#define CGAL_MDCS_CONCURRENCY_H
+
+#include <CGAL/MDCS/progress.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+#endif
+
+namespace CGAL {
+namespace MDCS {
+
+/*!
+  \brief How many threads a call may use.
+
+  MDCS entry points that can run in parallel take a `ConcurrencyTag` template parameter
+  (`CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`, as in CGAL) and a thread
+  count: `0` means every hardware thread, `1` runs sequentially, `n` at most `n` threads. Without TBB
+  (`CGAL_LINKED_WITH_TBB` undefined) everything runs sequentially whatever the tag and the count.
+
+  Results never depend on the thread count: the parallel loops below cut the work into blocks that depend only
+  on the input (never on the number of threads), and every reduction combines the blocks' results in block order.
+*/
+inline std::size_t hardware_threads()
+{
+  const unsigned n = std::thread::hardware_concurrency();
+  return n == 0 ? 1 : std::size_t(n);
+}
+
+/// Whether TBB is linked in, i.e. whether a parallel tag can run more than one thread.
+constexpr bool has_parallel_support()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return true;
+#else
+  return false;
+#endif
+}
+
+/// Whether `ConcurrencyTag` asks for parallel execution (`CGAL::Parallel_tag`, or
+/// `CGAL::Parallel_if_available_tag` when TBB is linked in).
+template <class ConcurrencyTag>
+struct Is_parallel_tag : std::is_same<ConcurrencyTag, CGAL::Parallel_tag>
+{};
+
+/// The number of threads a call with `ConcurrencyTag` and the requested count `requested` (0: all) runs on.
+template <class ConcurrencyTag>
+std::size_t effective_threads(std::size_t requested)
+{
+  static_assert(std::is_same<ConcurrencyTag, CGAL::Sequential_tag>::value ||
+                  std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "ConcurrencyTag must be CGAL::Sequential_tag, CGAL::Parallel_tag or CGAL::Parallel_if_available_tag");
+  if(!Is_parallel_tag<ConcurrencyTag>::value || !has_parallel_support())
+    return 1;
+  return requested == 0 ? hardware_threads() : requested;
+}
+
+/// The same for a run-time choice (the command-line tool and the Python layer): `threads` 0 means all.
+inline std::size_t effective_threads(std::size_t requested, bool parallel)
+{
+  return parallel ? effective_threads<CGAL::Parallel_if_available_tag>(requested) : 1;
+}
+
+namespace internal {
+
+// The blocks of [0, n): block b is [b * size, min(n, (b + 1) * size)). The size depends on n and the caller's
+// choice only, so a body that writes per-block results sees the same blocks for every thread count.
+struct Block_partition
+{
+  std::size_t n, size;
+  std::size_t count() const { return size == 0 ? 0 : (n + size - 1) / size; }
+  std::size_t begin(std::size_t b) const { return b * size; }
+  std::size_t end(std::size_t b) const { return (std::min)(n, (b + 1) * size); }
+};
+
+} // namespace internal
+
+/*!
+  \brief Runs `body(begin, end, block)` on the blocks of `[0, n)` of `block_size` items (the last one may be
+  shorter), on at most `threads` threads (see `effective_threads()`).
+
+  The blocks are the same for every thread count; only which thread runs a block changes. A body that writes
+  nothing but its own block's results therefore gives identical results for every thread count. An exception
+  thrown by a body stops the loop and is rethrown in the calling thread (the first one, if several throw).
+*/
+template <class Body>
+void parallel_for_blocks(std::size_t n, std::size_t block_size, std::size_t threads, Body body)
+{
+  if(block_size == 0)
+    block_size = 1;
+  const internal::Block_partition blocks{n, block_size};
+  const std::size_t count = blocks.count();
+  if(threads <= 1 || count <= 1 || !has_parallel_support()) {
+    for(std::size_t b = 0; b < count; ++b)
+      body(blocks.begin(b), blocks.end(b), b);
+    return;
+  }
+#ifdef CGAL_LINKED_WITH_TBB
+  // More threads than cores (tests oversubscribe on purpose): TBB's default limit is the number of cores, so it is
+  // raised for the duration of the call. The smallest active limit wins, so a limit of the caller's still holds.
+  const std::size_t used = (std::min)(threads, count);
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, (std::max)(used, hardware_threads()));
+  tbb::task_arena arena(static_cast<int>(used));
+  arena.execute([&] {
+    // simple_partitioner with grain 1: every block is a task of its own, so the blocks stay those above
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for(std::size_t b = r.begin(); b != r.end(); ++b)
+                          body(blocks.begin(b), blocks.end(b), b);
+                      },
+                      tbb::simple_partitioner());
+  });
+#endif
+}
+
+/// `parallel_for_blocks()` with one block per item: `body(i)` for every `i` in `[0, n)`.
+template <class Body>
+void parallel_for_each_index(std::size_t n, std::size_t threads, Body body)
+{
+  parallel_for_blocks(n, 1, threads, [&](std::size_t begin, std::size_t, std::size_t) { body(begin); });
+}
+
+/*!
+  \brief One object of type `T` per thread (a solver, a scratch buffer), created on first use by `make()`.
+
+  The objects must not carry results from one block to the next that change what a later block computes;
+  they are for workspace only (results go to per-block outputs).
+*/
+template <class T>
+class Per_thread
+{
+public:
+  template <class Make>
+  explicit Per_thread(Make make)
+#ifdef CGAL_LINKED_WITH_TBB
+    : storage_([make] { return make(); })
+#else
+    : value_(make())
+#endif
+  {}
+
+  T& local()
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    return storage_.local();
+#else
+    return value_;
+#endif
+  }
+
+  /// Calls `f(T&)` for every object created so far (after the parallel loop).
+  template <class F>
+  void for_each(F f)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    for(T& t : storage_)
+      f(t);
+#else
+    f(value_);
+#endif
+  }
+
+private:
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<T> storage_;
+#else
+  T value_;
+#endif
+};
+
+/*!
+  \brief Progress and cancellation of a parallel loop: the workers count finished items with `advance()`
+  (an atomic counter) and only the thread that created the reporter calls the user's callback, so a callback
+  that prints or checks for signals is never called concurrently. When the callback returns `false`, every
+  later `advance()` returns `false` (bodies should then return early) and `finish()` throws
+  `Operation_cancelled`.
+*/
+template <class Progress>
+class Parallel_progress
+{
+public:
+  Parallel_progress(Progress& progress, const char* stage, std::size_t total)
+    : progress_(progress), stage_(stage), total_(total == 0 ? 1 : total), owner_(std::this_thread::get_id())
+  {
+    step_ = total_ / 100 == 0 ? 1 : total_ / 100;
+    next_ = 0;
+    report(0);
+  }
+
+  /// Counts `k` finished items; returns `false` once the run is cancelled.
+  bool advance(std::size_t k = 1)
+  {
+    const std::size_t done = done_.fetch_add(k, std::memory_order_relaxed) + k;
+    if(std::this_thread::get_id() == owner_ && done >= next_) {
+      next_ = done + step_;
+      report(done);
+    }
+    return !cancelled_.load(std::memory_order_relaxed);
+  }
+
+  bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
+
+  /// After the loop: reports completion, or throws `Operation_cancelled` if the callback asked to stop.
+  void finish()
+  {
+    if(!cancelled())
+      report(total_);
+    if(cancelled())
+      throw Operation_cancelled(stage_);
+  }
+
+private:
+  void report(std::size_t done)
+  {
+    if(cancelled())
+      return;
+    const double fraction = done >= total_ ? 1.0 : double(done) / double(total_);
+    if(!progress_(stage_, fraction))
+      cancelled_.store(true, std::memory_order_relaxed);
+  }
+
+  Progress& progress_;
+  const char* stage_;
+  std::size_t total_, step_, next_;
+  std::thread::id owner_;
+  std::atomic<std::size_t> done_{0};
+  std::atomic<bool> cancelled_{false};
+};
+
+} // namespace MDCS
+} // namespace CGAL
+
+#endif // CGAL_MDCS_CONCURRENCY_H
