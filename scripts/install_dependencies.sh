@@ -15,6 +15,7 @@ packages=(
   libopenmesh-dev                       # OpenMesh: the tests run the mesh algorithms on its TriMesh too
   doxygen libjs-mathjax                 # offline manual (formulas through the local MathJax)
   librsvg2-bin                          # rsvg-convert: PNG copies of the SVG pictures
+  python3                               # the runner of the command-line cases (test/cli)
 )
 
 missing=()

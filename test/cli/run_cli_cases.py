@@ -1,0 +1,144 @@
+#!/usr/bin/env python3
+"""Runs the command-line cases of the mdcs tool: each case is a command line, the exit code it must give, and a
+time limit. A case fails when the exit code differs, the time limit passes (a hang), a sanitizer reports anything
+(AddressSanitizer, UndefinedBehaviorSanitizer, LeakSanitizer: their exit codes are moved away from the tool's
+own 0-4 and their reports looked for on stderr), or the process dies of a signal (a crash).
+
+Case files (test/cli/cases_*.txt), one case per line, fields separated by '|' (which arguments cannot contain):
+    name | exit code | seconds | arguments after `mdcs` | optional checks
+Blank lines and lines starting with '#' are ignored. In the arguments, {in} is test/cli/inputs, {tmp} a fresh
+scratch folder of the case, {cgal} CGAL's mesh folder (cases that use it are skipped when it is missing).
+Arguments are split like a shell would (shlex), without a shell. Checks, separated by ';':
+    stderr~TEXT      stderr contains TEXT              stdout~TEXT   stdout contains TEXT
+    file:PATH        PATH (with placeholders) exists   nofile:PATH   PATH does not exist
+
+usage: run_cli_cases.py MDCS_EXECUTABLE CASE_FILE... [--cgal DIR] [--memory-mib N] [--filter TEXT] [--list]
+The memory limit (address space, default 4096 MiB) is not applied to sanitizer builds, whose shadow memory
+needs far more address space; there the time limit still catches unbounded growth.
+"""
+import argparse
+import os
+import resource
+import shlex
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SANITIZER_EXIT = {"asan": 86, "ubsan": 87, "lsan": 88}
+SANITIZER_MARKS = ("ERROR: AddressSanitizer", "runtime error:", "ERROR: LeakSanitizer", "SUMMARY: UndefinedBehaviorSanitizer",
+                   "WARNING: ThreadSanitizer")
+
+
+def parse_cases(path):
+    cases = []
+    with open(path, encoding="utf-8") as f:
+        for number, line in enumerate(f, 1):
+            line = line.rstrip("\n")
+            if not line.strip() or line.lstrip().startswith("#"):
+                continue
+            fields = [x.strip() for x in line.split("|")]
+            if len(fields) not in (4, 5):
+                raise SystemExit(f"{path}:{number}: expected 'name | exit | seconds | arguments [| checks]'")
+            name, code, seconds, args = fields[:4]
+            checks = [c.strip() for c in fields[4].split(";") if c.strip()] if len(fields) == 5 else []
+            cases.append(dict(name=name, code=int(code), seconds=float(seconds), args=args, checks=checks,
+                              where=f"{os.path.basename(path)}:{number}"))
+    return cases
+
+
+def substitute(text, tmp, cgal):
+    return text.replace("{in}", os.path.join(HERE, "inputs")).replace("{tmp}", tmp).replace("{cgal}", cgal or "")
+
+
+def run_case(exe, case, cgal, memory_mib, sanitized):
+    if "{cgal}" in case["args"] and not cgal:
+        return "skip", "no CGAL mesh folder"
+    tmp = tempfile.mkdtemp(prefix="mdcs-cli-")
+    try:
+        args = [exe] + shlex.split(substitute(case["args"], tmp, cgal))
+        env = dict(os.environ)
+        env["ASAN_OPTIONS"] = f"exitcode={SANITIZER_EXIT['asan']}:detect_leaks=1:abort_on_error=0"
+        env["UBSAN_OPTIONS"] = f"exitcode={SANITIZER_EXIT['ubsan']}:print_stacktrace=1:halt_on_error=1"
+        env["LSAN_OPTIONS"] = f"exitcode={SANITIZER_EXIT['lsan']}"
+
+        def limits():
+            os.setsid()
+            if not sanitized and memory_mib > 0:
+                limit = memory_mib * 1024 * 1024
+                resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+        start = time.monotonic()
+        proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp, env=env,
+                                preexec_fn=limits)
+        try:
+            out, err = proc.communicate(timeout=case["seconds"])
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.communicate()
+            return "fail", f"no exit within {case['seconds']} s (hang or unbounded work)"
+        elapsed = time.monotonic() - start
+        out = out.decode("utf-8", "replace")
+        err = err.decode("utf-8", "replace")
+        problems = []
+        if proc.returncode < 0:
+            problems.append(f"killed by signal {-proc.returncode} (crash)")
+        for mark in SANITIZER_MARKS:
+            if mark in err:
+                problems.append(f"sanitizer report ({mark})")
+                break
+        if proc.returncode != case["code"] and proc.returncode >= 0:
+            problems.append(f"exit code {proc.returncode}, expected {case['code']}")
+        for check in case["checks"]:
+            kind, _, value = check.partition("~") if "~" in check else check.partition(":")
+            value = substitute(value, tmp, cgal)
+            if kind == "stderr" and value not in err:
+                problems.append(f"stderr lacks '{value}'")
+            elif kind == "stdout" and value not in out:
+                problems.append(f"stdout lacks '{value}'")
+            elif kind == "file" and not os.path.exists(os.path.join(tmp, value)):
+                problems.append(f"file '{value}' missing")
+            elif kind == "nofile" and os.path.exists(os.path.join(tmp, value)):
+                problems.append(f"file '{value}' should not exist")
+            elif kind not in ("stderr", "stdout", "file", "nofile"):
+                problems.append(f"unknown check '{check}'")
+        if problems:
+            tail = "\n      ".join(err.strip().splitlines()[-6:])
+            return "fail", "; ".join(problems) + f" [{elapsed:.2f} s]\n      stderr: {tail}"
+        return "pass", f"{elapsed:.2f} s"
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("exe")
+    parser.add_argument("case_files", nargs="+")
+    parser.add_argument("--cgal", default="")
+    parser.add_argument("--memory-mib", type=int, default=4096)
+    parser.add_argument("--filter", default="")
+    parser.add_argument("--list", action="store_true")
+    parser.add_argument("--sanitized", action="store_true", help="the executable is a sanitizer build")
+    a = parser.parse_args()
+    a.exe = os.path.abspath(a.exe)
+    cgal = a.cgal if a.cgal and os.path.isdir(a.cgal) else ""
+    cases = [c for f in a.case_files for c in parse_cases(f) if a.filter in c["name"]]
+    if a.list:
+        for c in cases:
+            print(f"{c['where']}: {c['name']}")
+        return 0
+    failed = skipped = 0
+    for c in cases:
+        status, detail = run_case(a.exe, c, cgal, a.memory_mib, a.sanitized)
+        print(f"{status:4} {c['name']} ({c['where']}): {detail}", flush=True)
+        failed += status == "fail"
+        skipped += status == "skip"
+    print(f"{len(cases) - failed - skipped} passed, {failed} failed, {skipped} skipped of {len(cases)} cases")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
