@@ -15,6 +15,9 @@ def pytest_addoption(parser):
 
 def pytest_configure(config):
     config.addinivalue_line("markers", "long: a long test, skipped unless --run-long is given")
+    # Debian 12's distributed and tornado warn about their own dependencies' deprecations.
+    config.addinivalue_line("filterwarnings", "ignore::DeprecationWarning:distributed.*")
+    config.addinivalue_line("filterwarnings", "ignore::DeprecationWarning:tornado.*")
 
 
 def pytest_collection_modifyitems(config, items):
