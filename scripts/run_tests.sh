@@ -32,7 +32,8 @@ fi
 if [ "$sanitize" = ON ]; then build=build-sanitize; type=RelWithDebInfo; else build=build; type=Release; fi
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=$type -DMDCS_SANITIZE=$sanitize \
-  -DMDCS_BUILD_TESTS=ON -DMDCS_BUILD_EXAMPLES=OFF -DMDCS_BUILD_CLI=ON -DMDCS_BUILD_BENCHMARKS=OFF -DMDCS_BUILD_DOC=OFF >/dev/null
+  -DMDCS_BUILD_TESTS=ON -DMDCS_BUILD_EXAMPLES=OFF -DMDCS_BUILD_CLI=ON -DMDCS_BUILD_BENCHMARKS=OFF -DMDCS_BUILD_DOC=OFF \
+  -DMDCS_BUILD_PYTHON=ON >/dev/null
 cmake --build "$build" -j "$jobs"
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0

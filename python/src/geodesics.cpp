@@ -13,6 +13,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -349,6 +350,30 @@ public:
                           py::make_tuple(rows, columns));
   }
 
+  // The benchmark's anchor: the same computation as distances(source) for a vertex source, timed inside C++ (one
+  // pooled solver, sources set, propagation, the distance of every vertex copied out), `repeats` times.
+  std::vector<double> cpp_distances_seconds(std::int64_t source, const std::string& method, std::size_t repeats)
+  {
+    const Geodesic_surface& s = *surface_;
+    const std::int64_t v = checked_index(py::int_(source), "source", std::int64_t(s.number_of_vertices()), "vertices");
+    const Solver_kind kind = solver_kind(method, 0.0, false);
+    std::vector<double> seconds;
+    py::gil_scoped_release release;
+    Pooled_solver pooled(s, kind);
+    std::vector<double> d(s.number_of_vertices()), mesh_d;
+    for(std::size_t r = 0; r < repeats; ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      pooled.solver->clear_sources();
+      s.add_source(*pooled.solver, s.vertex_source(std::size_t(v)));
+      pooled.solver->set_distance_limit(infinity);
+      pooled.solver->compute_quietly();
+      pooled.solver->vertex_results(mesh_d, nullptr);
+      s.user_results(mesh_d, nullptr, {0}, d.data(), nullptr);
+      seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    return seconds;
+  }
+
   std::shared_ptr<const Geodesic_surface> surface_;
 };
 
@@ -503,7 +528,9 @@ void bind_geodesics(py::module_& m)
          py::arg("targets"), py::arg("stop_at_targets"), py::arg("nearest"), py::arg("progress"))
     .def("distance_matrix", &Py_surface::distance_matrix, py::arg("sources"), py::arg("source_faces"),
          py::arg("source_barycentric"), py::arg("targets"), py::arg("method"), py::arg("tolerance"),
-         py::arg("max_distance"), py::arg("sparse"), py::arg("threads"), py::arg("progress"));
+         py::arg("max_distance"), py::arg("sparse"), py::arg("threads"), py::arg("progress"))
+    .def("_cpp_distances_seconds", &Py_surface::cpp_distances_seconds, py::arg("source"), py::arg("method"),
+         py::arg("repeats"), "Benchmark anchor: seconds of the same computation as distances(source), timed in C++.");
 
   py::class_<Py_field>(g, "Field", "A computed geodesic distance field (see mdcs.geodesics.GeodesicField).")
     .def(py::init<const Py_surface&, py::handle, py::handle, py::handle, const std::string&, double, py::handle, bool,
