@@ -66,7 +66,7 @@ def main():
 
     clusters = {}
     for workers in (1, 2):
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None,
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=":0",
                                silence_logs=40)
         clusters[workers] = (cluster, Client(cluster))
     times = {1: [], 2: []}

@@ -9,7 +9,9 @@ vertices. Interleaved: each round times one C++ run and one Python run from the 
     PYTHONPATH=<build>/python python3 bench_python_overhead.py [--meshes ChineseDragon-10kv.off,man.off,armadillo.off]
         [--rounds 15] [--sources 5] [--method exact] [--csv FILE]
 
-Prints per mesh the medians of both and the overhead (Python / C++ - 1; the goal: <= 5%), and the load.
+Prints per mesh the medians of both, wall-clock and CPU time of the calling thread (which runs the whole
+computation; CPU time is less sensitive to other load), the overhead (Python / C++ - 1; the goal: <= 5%), and the
+load.
 """
 
 import argparse
@@ -27,18 +29,19 @@ from bench_meshes import demo_mesh  # noqa: E402
 
 
 def measure(mesh, sources, rounds, method):
+    """Per round: (wall, thread CPU) seconds of the C++ anchor and of the Python call, in alternating order."""
     cpp, py = [], []
     for r in range(rounds):
         s = int(sources[r % len(sources)])
-        order = (0, 1) if r % 2 == 0 else (1, 0)  # alternate which goes first
-        for which in order:
+        for which in ((0, 1) if r % 2 == 0 else (1, 0)):
             if which == 0:
                 cpp.append(mesh._surface._cpp_distances_seconds(s, method, 1)[0])
             else:
-                t = time.perf_counter()
+                wall, cpu = time.perf_counter(), time.thread_time()
                 mesh.distances(s, method=method, progress=False)
-                py.append(time.perf_counter() - t)
-    return statistics.median(cpp), statistics.median(py), cpp, py
+                py.append((time.perf_counter() - wall, time.thread_time() - cpu))
+    median = lambda xs, i: statistics.median(x[i] for x in xs)  # noqa: E731
+    return median(cpp, 0), median(py, 0), median(cpp, 1), median(py, 1)
 
 
 def main():
@@ -52,17 +55,20 @@ def main():
     args = parser.parse_args()
     rows = []
     print(f"load before: {os.getloadavg()}; mdcs {mdcs.__version__}, method {args.method}, {args.rounds} rounds")
-    print(f"{'mesh':28s} {'vertices':>9s} {'C++ median s':>13s} {'Python median s':>16s} {'overhead':>9s}")
+    print(f"{'mesh':24s} {'vertices':>9s} {'C++ wall s':>11s} {'Python wall s':>14s} {'overhead':>9s} "
+          f"{'C++ CPU s':>10s} {'Python CPU s':>13s} {'CPU overhead':>13s}")
     for name in args.meshes.split(","):
         V, F = demo_mesh(name, args.mesh_dir)
         mesh = mdcs.Mesh(V, F)
         sources = np.linspace(0, len(V) - 1, args.sources).astype(int)
         mesh.distances(int(sources[0]), method=args.method, progress=False)  # warm the pool
-        cpp, py, _, _ = measure(mesh, sources, args.rounds, args.method)
-        overhead = py / cpp - 1
-        print(f"{name:28s} {len(V):9d} {cpp:13.5f} {py:16.5f} {100 * overhead:8.2f}%")
+        cpp, py, cpp_cpu, py_cpu = measure(mesh, sources, args.rounds, args.method)
+        overhead, cpu_overhead = py / cpp - 1, py_cpu / cpp_cpu - 1
+        print(f"{name:24s} {len(V):9d} {cpp:11.5f} {py:14.5f} {100 * overhead:8.2f}% {cpp_cpu:10.5f} {py_cpu:13.5f} "
+              f"{100 * cpu_overhead:12.2f}%", flush=True)
         rows.append({"mesh": name, "vertices": len(V), "method": args.method, "rounds": args.rounds,
-                     "cpp_median_s": cpp, "python_median_s": py, "overhead": overhead})
+                     "cpp_wall_median_s": cpp, "python_wall_median_s": py, "overhead_wall": overhead,
+                     "cpp_cpu_median_s": cpp_cpu, "python_cpu_median_s": py_cpu, "overhead_cpu": cpu_overhead})
     load = os.getloadavg()
     print(f"load after: {load}")
     if args.csv:

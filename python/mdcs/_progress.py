@@ -5,7 +5,7 @@
 Every long call of mdcs takes ``progress=``:
 
 - ``"auto"`` (the default): a tqdm progress bar on stderr that appears only when the call runs longer than a second
-  (nothing when tqdm is not installed);
+  and stderr is a terminal (nothing in logs, pipes or when tqdm is not installed);
 - ``True``: a tqdm progress bar from the start;
 - ``False`` or ``None``: nothing;
 - a callable ``progress(stage: str, fraction: float)``: called with the stage name and the completed fraction of
@@ -17,6 +17,7 @@ Whatever is chosen, Ctrl-C (SIGINT) stops a running computation within a fractio
 """
 
 import contextlib
+import sys
 
 try:  # optional dependency (Debian: python3-tqdm)
     from tqdm import tqdm as _tqdm
@@ -53,6 +54,13 @@ class _TqdmStages:
             self._bar = None
 
 
+def _stderr_is_terminal():
+    try:
+        return sys.stderr.isatty()
+    except (AttributeError, ValueError):
+        return False
+
+
 @contextlib.contextmanager
 def progress_callback(progress, description=""):
     """The callable handed to the C++ core for ``progress`` (see the module documentation), as a context manager
@@ -64,7 +72,7 @@ def progress_callback(progress, description=""):
         yield progress
         return
     if progress is True or progress == "auto":
-        if _tqdm is None:
+        if _tqdm is None or (progress == "auto" and not _stderr_is_terminal()):
             yield None
             return
         bars = _TqdmStages(description, 0.0 if progress is True else 1.0)

@@ -27,7 +27,7 @@ import os
 import numpy as np
 
 from . import geodesics
-from ._progress import _tqdm
+from ._progress import _stderr_is_terminal, _tqdm
 
 __all__ = ["distance_matrix", "map"]
 
@@ -69,7 +69,7 @@ class _Progress:
         if callable(progress) and not isinstance(progress, (bool, str)):
             self.callback = progress
         elif progress is True or progress == "auto":
-            if _tqdm is not None:
+            if _tqdm is not None and (progress is True or _stderr_is_terminal()):
                 self.bar = _tqdm(total=total, desc=description, delay=0.0 if progress is True else 1.0, leave=False)
         else:
             raise ValueError(f"mdcs: progress must be 'auto', True, False, None or a callable, got {progress!r}")

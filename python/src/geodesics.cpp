@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <ctime>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -351,25 +352,37 @@ public:
   }
 
   // The benchmark's anchor: the same computation as distances(source) for a vertex source, timed inside C++ (one
-  // pooled solver, sources set, propagation, the distance of every vertex copied out), `repeats` times.
-  std::vector<double> cpp_distances_seconds(std::int64_t source, const std::string& method, std::size_t repeats)
+  // pooled solver, sources set, propagation, the distance of every vertex copied out), `repeats` times. Returns
+  // (wall-clock seconds, CPU seconds of the calling thread) per repeat; with `with_progress` the propagation reports
+  // to a progress bridge without a callback, as distances() does.
+  std::vector<std::pair<double, double>> cpp_distances_seconds(std::int64_t source, const std::string& method,
+                                                               std::size_t repeats, bool with_progress)
   {
     const Geodesic_surface& s = *surface_;
     const std::int64_t v = checked_index(py::int_(source), "source", std::int64_t(s.number_of_vertices()), "vertices");
     const Solver_kind kind = solver_kind(method, 0.0, false);
-    std::vector<double> seconds;
+    std::vector<std::pair<double, double>> seconds;
+    Progress_bridge bridge{py::none()};
     py::gil_scoped_release release;
     Pooled_solver pooled(s, kind);
     std::vector<double> d(s.number_of_vertices()), mesh_d;
+    auto cpu = [] {
+      timespec t;
+      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+      return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+    };
     for(std::size_t r = 0; r < repeats; ++r) {
       const auto start = std::chrono::steady_clock::now();
+      const double cpu_start = cpu();
       pooled.solver->clear_sources();
       s.add_source(*pooled.solver, s.vertex_source(std::size_t(v)));
       pooled.solver->set_distance_limit(infinity);
-      pooled.solver->compute_quietly();
+      if(with_progress) pooled.solver->compute(bridge);
+      else pooled.solver->compute_quietly();
       pooled.solver->vertex_results(mesh_d, nullptr);
       s.user_results(mesh_d, nullptr, {0}, d.data(), nullptr);
-      seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      seconds.emplace_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                           cpu() - cpu_start);
     }
     return seconds;
   }
@@ -530,7 +543,8 @@ void bind_geodesics(py::module_& m)
          py::arg("source_barycentric"), py::arg("targets"), py::arg("method"), py::arg("tolerance"),
          py::arg("max_distance"), py::arg("sparse"), py::arg("threads"), py::arg("progress"))
     .def("_cpp_distances_seconds", &Py_surface::cpp_distances_seconds, py::arg("source"), py::arg("method"),
-         py::arg("repeats"), "Benchmark anchor: seconds of the same computation as distances(source), timed in C++.");
+         py::arg("repeats"), py::arg("with_progress") = false,
+         "Benchmark anchor: (wall, thread CPU) seconds of the same computation as distances(source), timed in C++.");
 
   py::class_<Py_field>(g, "Field", "A computed geodesic distance field (see mdcs.geodesics.GeodesicField).")
     .def(py::init<const Py_surface&, py::handle, py::handle, py::handle, const std::string&, double, py::handle, bool,
