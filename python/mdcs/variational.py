@@ -191,6 +191,10 @@ def minimal_curve(functional, *, interval, value_range, left, right, lines=1600,
     Returns:
         :class:`MinimalCurve`.
     """
+    if isinstance(lines, np.integer):
+        lines = int(lines)
+    elif isinstance(lines, (bool, float, np.floating)):
+        raise ValueError(f"mdcs: lines must be a number of random lines (an integer) or a (k, 4) array, got {lines!r}")
     with progress_callback(progress, "curve") as callback:
         arrangement = _core.CurveArrangement(interval, value_range, _end(left, "left"), _end(right, "right"),
                                              lines if grid is None else None, 0 if grid is None else int(grid),
