@@ -201,6 +201,13 @@ class Mesh:
         self.vertices.setflags(write=False)
         self.faces.setflags(write=False)
 
+    @classmethod
+    def from_file(cls, path):
+        """A mesh read from an OFF, PLY, OBJ or STL file (see :func:`mdcs.io.read_mesh`)."""
+        from .io import read_mesh
+
+        return cls(*read_mesh(path))
+
     def __reduce__(self):
         return (Mesh, (self.vertices, self.faces))
 

@@ -68,9 +68,10 @@ def test_exact_agrees_with_cgal_surface_mesh_shortest_path(bumpy):
         np.testing.assert_allclose(ours, cgal, rtol=1e-9, atol=1e-12)
 
 
-def test_exact_agrees_with_cgal_on_a_demo_mesh(elephant):
+def test_exact_agrees_with_cgal_on_a_demo_mesh(elephant, cgal_mesh_dir):
     V, F = elephant
-    mesh = mdcs.Mesh(V, F)
+    mesh = mdcs.Mesh.from_file(f"{cgal_mesh_dir}/elephant.off")
+    assert np.array_equal(mesh.vertices, V) and np.array_equal(mesh.faces, F)
     for source in (0, 1500):
         ours = mesh.distances(source, progress=False)
         cgal = _mdcs.reference.cgal_shortest_path_distances(V, F, source)
