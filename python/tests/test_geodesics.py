@@ -130,6 +130,12 @@ def test_max_distance_and_targets(bumpy):
     for method in mdcs.geodesics.METHODS:
         m = mesh.distances(9, method=method, max_distance=limit, progress=False)
         assert np.all(np.isinf(m) | (m <= limit + 1e-9)), method
+    # a limit beyond every possible distance (gdist's default 1e100) is dropped: the same values as no limit
+    for method in mdcs.geodesics.METHODS:
+        np.testing.assert_array_equal(mesh.distances(9, method=method, max_distance=1e100, progress=False),
+                                      mesh.distances(9, method=method, progress=False))
+    np.testing.assert_array_equal(mesh.distance_matrix([9, 40], max_distance=1e100, progress=False),
+                                  mesh.distance_matrix([9, 40], progress=False))
 
 
 def test_unreachable_components_and_isolated_vertices():

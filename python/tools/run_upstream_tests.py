@@ -33,9 +33,12 @@ sys.modules["pygeodesic.geodesic"] = _geodesic
 
 def run(label, checkout, tests, shim_dir, pytest_args):
     env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join([shim_dir] + [p for p in env.get("PYTHONPATH", "").split(os.pathsep) if p])
+    env["PYTHONPATH"] = os.pathsep.join([shim_dir] + [os.path.abspath(p) for p in env.get("PYTHONPATH", "").split(os.pathsep) if p])
     env["PYTHONDONTWRITEBYTECODE"] = "1"
-    command = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-v", tests] + pytest_args
+    # pytest runs in the checkout (tvb-gdist's tests read data/ from there), but without the checkout on sys.path
+    # (as "python -m pytest" would put it): the original package there (pygeodesic/) must not shadow the shim.
+    runner = "import sys; sys.path.pop(0); import pytest; sys.exit(pytest.main(sys.argv[1:]))"
+    command = [sys.executable, "-c", runner, "-p", "no:cacheprovider", "-v", tests] + pytest_args
     print(f"== {label}: {' '.join(command)} (in {checkout})", flush=True)
     return subprocess.call(command, cwd=checkout, env=env)
 
