@@ -54,6 +54,17 @@ def colour(x):
     return [f"rgb({r:.0f},{g:.0f},{b:.0f})" for r, g, b in c]
 
 
+def legend(x, y, maximum, width=200):
+    """A colour bar from 0 to `maximum` (SVG text)."""
+    steps = 40
+    fill = colour(np.linspace(0, 1, steps))
+    bar = "".join(f"<rect x='{x + width * i / steps:.1f}' y='{y}' width='{width / steps + 0.5:.1f}' height='10' "
+                  f"fill='{fill[i]}'/>" for i in range(steps))
+    return (bar + f"<text x='{x}' y='{y + 24}' font-family='sans-serif' font-size='11'>0</text>"
+            f"<text x='{x + width}' y='{y + 24}' font-family='sans-serif' font-size='11' text-anchor='end'>"
+            f"{maximum:.3g}</text>\n")
+
+
 def draw_field(V, F, d, sources, title, path, size=600):
     # orthographic view along -z after a turn about y; painter's order; faces coloured by their mean distance
     c, s = np.cos(0.6), np.sin(0.6)
@@ -65,9 +76,10 @@ def draw_field(V, F, d, sources, title, path, size=600):
     order = np.argsort(W[F, 2].mean(axis=1))
     fill = colour(d[F].mean(axis=1) / d[np.isfinite(d)].max())
     with open(path, "w") as out:
-        out.write(f"<svg xmlns='http://www.w3.org/2000/svg' width='{size}' height='{size + 30}'>"
+        out.write(f"<svg xmlns='http://www.w3.org/2000/svg' width='{size}' height='{size + 60}'>"
                   f"<rect width='100%' height='100%' fill='white'/>"
                   f"<text x='10' y='{size + 20}' font-family='sans-serif' font-size='14'>{title}</text>\n")
+        out.write(legend(10, size + 30, d[np.isfinite(d)].max()))
         for f in order:
             pts = " ".join(f"{x:.1f},{y:.1f}" for x, y in xy[F[f]])
             out.write(f"<polygon points='{pts}' fill='{fill[f]}' stroke='{fill[f]}' stroke-width='0.3'/>\n")
@@ -80,8 +92,9 @@ def draw_matrix(D, labels, path, cell=36):
     k = len(D)
     fill = colour((D / D.max()).ravel())
     with open(path, "w") as out:
-        out.write(f"<svg xmlns='http://www.w3.org/2000/svg' width='{cell * k + 80}' height='{cell * k + 80}' "
+        out.write(f"<svg xmlns='http://www.w3.org/2000/svg' width='{cell * k + 80}' height='{cell * k + 110}' "
                   "font-family='sans-serif' font-size='10'><rect width='100%' height='100%' fill='white'/>\n")
+        out.write(legend(60, cell * k + 75, D.max()))
         for i in range(k):
             out.write(f"<text x='4' y='{60 + cell * i + cell / 2:.0f}'>{labels[i]}</text>"
                       f"<text x='{60 + cell * i + 2}' y='50'>{labels[i]}</text>\n")

@@ -6,11 +6,13 @@ random line arrangement with the built-in functional and again with the same int
 function, compared with the exact catenoid; then a curve of least "travel time" through a medium whose slowness is a
 user function. Writes minimal_curve.svg.
 
-    python3 minimal_curve.py [LINES] [OUTPUT_FOLDER]      (default 1600 lines)
+    python3 minimal_curve.py [OUTPUT_FOLDER] [--lines N]
+
+OUTPUT_FOLDER: default mdcs-output; --lines: the number of random lines of the arrangement (default 1600).
 """
 
+import argparse
 import os
-import sys
 
 import numpy as np
 
@@ -18,8 +20,11 @@ import mdcs
 
 
 def main():
-    lines = int(sys.argv[1]) if len(sys.argv) > 1 else 1600
-    folder = sys.argv[2] if len(sys.argv) > 2 else "mdcs-output"
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("folder", nargs="?", default="mdcs-output")
+    parser.add_argument("--lines", type=int, default=1600)
+    args = parser.parse_args()
+    lines, folder = args.lines, args.folder
     os.makedirs(folder, exist_ok=True)
     problem = dict(interval=(-1, 1), value_range=(0, 2), left=2.0, right=2.0, lines=lines)
     builtin = mdcs.variational.minimal_curve("surface_of_rotation", **problem)

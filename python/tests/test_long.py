@@ -21,7 +21,7 @@ EXAMPLES = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "pyth
                                              ("mwt.py", ["mwt.svg"]), ("minimal_curve.py", ["minimal_curve.svg"])])
 def test_examples_run(tmp_path, script, outputs):
     args = [sys.executable, os.path.join(EXAMPLES, script)]
-    args += ["800", str(tmp_path)] if script == "minimal_curve.py" else [str(tmp_path)]
+    args += [str(tmp_path)] + (["--lines", "800"] if script == "minimal_curve.py" else [])
     result = subprocess.run(args, capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stderr
     for name in outputs:
