@@ -113,9 +113,10 @@ void read_OBJ(std::string_view data, const std::string& name, Output& out)
                  std::to_string(vertices) + " vertices so far)");
           corners.push_back(std::size_t(vertices - std::uint64_t(-(index + 1)) - 1));
         } else {
-          // A vertex statement takes at least 8 bytes ("v 0 0 0\n"): larger indices cannot be defined later.
-          if(std::uint64_t(index) > data.size() / 8 + 1)
-            fail("the vertex index " + std::to_string(index) + " is out of range (the file is too small to hold that many vertices)");
+          // Checked against the vertex count at the end (vertices may follow the face); an index that not even
+          // the whole file could reach is refused at once.
+          if(std::uint64_t(index) > data.size())
+            fail("the vertex index " + std::to_string(index) + " is out of range (the file cannot hold that many vertices)");
           corners.push_back(std::size_t(index - 1));
           if(std::uint64_t(index) > face_largest) face_largest = std::uint64_t(index);
         }
