@@ -49,8 +49,9 @@ struct Polygon_soup_triangulation_report
     projected boundary self-intersects (strongly non-planar polygons), CGAL's
     `Polygon_mesh_processing::triangulate_hole_polyline()` on the 3D boundary (up to
     `hole_filling_limit` corners);
-  - what remains (zero-area polygons, repeated or non-finite points, very large self-intersecting ones): a
-    fan from the first corner, counted in the report.
+  - what remains (zero-area polygons, repeated points, coordinates beyond 1e100 or not finite, and
+    self-intersecting polygons that are too large for hole filling or that it cannot fill): a fan from the
+    first corner, counted in the report.
 
   \tparam TriangleRange a back-insertion sequence of triangles: `std::array<I, 3>` or sequence containers
   \param triangle_to_polygon if not null, receives for each triangle the index of its polygon

@@ -88,6 +88,8 @@ Triangle_mesh_reading_report read_triangle_mesh(const std::string& file_name, Tr
   typedef std::vector<std::size_t> Polygon;
 
   Triangle_mesh_reading_report report;
+  CGAL::clear(tm);
+  auto count = [](std::size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); };
   std::vector<Point> points;
   std::vector<Polygon> polygons;
   report.format = read_polygon_soup(file_name, points, polygons, options.format);
@@ -123,9 +125,10 @@ Triangle_mesh_reading_report read_triangle_mesh(const std::string& file_name, Tr
   report.triangulation = triangulate_polygon_soup(points, polygons, triangles, &triangle_to_polygon);
   const Polygon_soup_triangulation_report& t = report.triangulation;
   if(t.polygons_split() > 0) {
-    report.notes.push_back(std::to_string(t.polygons_split()) + " faces with more than three corners were triangulated (" +
+    report.notes.push_back(count(t.polygons_split(), "face", "faces") + " with more than three corners " +
+                           (t.polygons_split() == 1 ? "was" : "were") + " triangulated (" +
                            std::to_string(polygons.size()) + " -> " + std::to_string(triangles.size()) +
-                           " faces" + (t.by_fan > 0 ? "; " + std::to_string(t.by_fan) + " degenerate ones as fans" : "") +
+                           " faces" + (t.by_fan > 0 ? "; " + count(t.by_fan, "degenerate one as a fan", "degenerate ones as fans") : "") +
                            "): face numbers refer to the triangles");
     if(!PMP::is_polygon_soup_a_polygon_mesh(triangles))
       refuse("triangulating the faces with more than three corners does not give a manifold mesh: " +
@@ -134,20 +137,19 @@ Triangle_mesh_reading_report read_triangle_mesh(const std::string& file_name, Tr
   if(!report.repaired) report.face_to_file_face = triangle_to_polygon;
 
   if(a.isolated_points > 0 && !report.repaired)
-    report.notes.push_back(std::to_string(a.isolated_points) + " vertices belong to no face (vertex " +
+    report.notes.push_back(count(a.isolated_points, "vertex belongs", "vertices belong") + " to no face (vertex " +
                            std::to_string(a.example_isolated_point) + " is one); they are kept, unreachable");
   if(a.coincident_points > 0)
-    report.notes.push_back(std::to_string(a.coincident_points) + " vertices have the same coordinates as another one (" +
+    report.notes.push_back(count(a.coincident_points, "vertex has", "vertices have") + " the same coordinates as another one (" +
                            std::to_string(a.example_coincident_points[0]) + " and " +
                            std::to_string(a.example_coincident_points[1]) + ")" +
                            (report.repaired ? "" : "; they are distinct vertices of the mesh"));
   if(a.degenerate_polygons > 0)
-    report.notes.push_back(std::to_string(a.degenerate_polygons) + " faces have zero area (face " +
+    report.notes.push_back(count(a.degenerate_polygons, "face has", "faces have") + " zero area (face " +
                            std::to_string(a.example_degenerate_polygon) + " is one)");
   if(a.connected_components > 1 && !report.repaired)
     report.notes.push_back("the surface has " + std::to_string(a.connected_components) + " connected components");
 
-  CGAL::clear(tm);
   PMP::polygon_soup_to_polygon_mesh(points, triangles, tm);
   return report;
 }

@@ -151,10 +151,12 @@ inline Polygon_triangulation_method triangulate_polygon(const std::vector<std::a
   bool usable = true;
   for(std::size_t c : corners)
     for(double x : coordinates[c]) usable = usable && std::isfinite(x) && std::abs(x) <= 1e100;
-  {
-    std::vector<std::size_t> sorted(corners);
+  if(usable) { // distinct points (by coordinates, not only by index)
+    std::vector<std::array<double, 3>> sorted;
+    sorted.reserve(k);
+    for(std::size_t c : corners) sorted.push_back(coordinates[c]);
     std::sort(sorted.begin(), sorted.end());
-    usable = usable && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+    usable = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
   }
   std::vector<K::Point_3> p;
   if(usable) {
@@ -179,14 +181,16 @@ inline Polygon_triangulation_method triangulate_polygon(const std::vector<std::a
       ny += (a[2] - b[2]) * (a[0] + b[0]);
       nz += (a[0] - b[0]) * (a[1] + b[1]);
     }
+    // A zero (or overflowing) normal: a polygon of zero area, which no geometric method triangulates better
+    // than a fan.
     if(std::isfinite(nx) && std::isfinite(ny) && std::isfinite(nz) && (nx != 0 || ny != 0 || nz != 0)) {
       if(constrained_delaunay_triangulation(p, K::Vector_3(nx, ny, nz), out))
         return Polygon_triangulation_method::constrained_delaunay;
       out.clear();
-    }
-    if(k <= hole_filling_limit) {
-      if(hole_filling_triangulation(p, out)) return Polygon_triangulation_method::hole_filling;
-      out.clear();
+      if(k <= hole_filling_limit) {
+        if(hole_filling_triangulation(p, out)) return Polygon_triangulation_method::hole_filling;
+        out.clear();
+      }
     }
   }
   for(std::size_t i = 1; i + 1 < k; ++i) out.push_back({{0, i, i + 1}});

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <istream>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -140,9 +141,11 @@ inline Dimacs_max_flow_problem read_dimacs_max_flow_from_data(std::string_view d
         fail("the capacity " + in::printable(c) + " is not a finite number");
       if(arc.capacity < 0) fail("the capacity " + in::printable(c) + " is negative");
       no_more(tokens, "the capacity");
-      // Every flow value stays below the total capacity: keeping the total finite keeps every result finite.
+      // Every flow value stays below the total capacity, and the engines need 1 + 3 x the total to be a
+      // double (Max_flow_problem's bound): a total up to a quarter of the largest double keeps both safe.
       total_capacity += arc.capacity;
-      if(!std::isfinite(total_capacity)) fail("the capacities add up to more than a double holds");
+      if(!(total_capacity <= std::numeric_limits<double>::max() / 4))
+        fail("the capacities add up to more than the max-flow engines handle (a quarter of the largest double, about 4.5e307)");
       if(problem.arcs.size() == problem.number_of_arcs)
         fail("more arcs than the " + std::to_string(problem.number_of_arcs) + " the 'p' line (line " +
              std::to_string(p_line) + ") announces");
@@ -170,8 +173,8 @@ inline Dimacs_max_flow_problem read_dimacs_max_flow_from_data(std::string_view d
   exactly one `n ID s` (the source) and one `n ID t` (the sink), different nodes; `ARCS` lines
   `a FROM TO CAPACITY` with node ids in 1..NODES and a finite capacity >= 0 (integer or real); blank lines
   are skipped. Every other line, a second `p` line, a second source or sink, trailing text on a line, and a
-  number of arcs other than the one announced (a truncated file), and capacities whose sum exceeds the range
-  of a double (so that every flow value stays finite) are errors. Nothing is allocated for the
+  number of arcs other than the one announced (a truncated file), and capacities whose sum exceeds a quarter
+  of the largest double (so that every flow value, and the engines' arithmetic, stays finite) are errors. Nothing is allocated for the
   announced node count: memory follows the size of the file.
 
   \throws Read_error with the file name, the line and a message that names the problem
