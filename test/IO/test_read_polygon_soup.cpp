@@ -125,6 +125,9 @@ TEST_CASE("read_polygon_soup: OFF variants", "[io][soup][off]")
   // Counts on their own line after the keyword; COFF with RGB, RGBA and colour-map vertex colours.
   s = faces_of("COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 1 0 0 1\n0 1 0 7\n3 0 1 2 5\n");
   CHECK(s.points[1] == Xyz{{1, 0, 0}});
+  // A colour without the C prefix (a common writer's slip) is tolerated: 3 or 4 numbers.
+  s = faces_of("OFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 1 0 0 1\n0 1 0\n3 0 1 2\n");
+  CHECK(s.points[1] == Xyz{{1, 0, 0}});
   // NOFF: a normal after each vertex; STOFF: texture coordinates; CNOFF: both normal and colour.
   s = faces_of("NOFF\n3 1 0\n0 0 0 0 0 1\n2 0 0 0 0 1\n0 3 0 0 0 1\n3 0 1 2\n");
   CHECK(s.points[2] == Xyz{{0, 3, 0}});
@@ -170,7 +173,9 @@ TEST_CASE("read_polygon_soup: malformed OFF files", "[io][soup][off][errors]")
   bad("OFF\n1000000000 1 0\n0 0 0\n", "announces 1000000000 vertices", 2);
   bad("OFF\n3 1000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "announces 1000000000 faces", 2);
   bad("OFF\n3 1 0\n0 0 0 # pad\n1 0\n0 1 0\n3 0 1 2\n", "vertex 1: 2 numbers on the line, expected 3", 4);
-  bad("OFF\n3 1 0\n0 0 0\n1 0 0 1 1 1\n0 1 0\n3 0 1 2\n", "vertex 1: 6 numbers", 4);
+  bad("OFF\n3 1 0\n0 0 0\n1 0 0 1 1\n0 1 0\n3 0 1 2\n", "vertex 1: 5 numbers", 4);
+  bad("OFF\n3 1 0\n0 0 0\n1 0 0 1\n0 1 0\n3 0 1 2\n", "vertex 1: 4 numbers", 4);
+  bad("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0\n0 1 0 0 0 1\n3 0 1 2\n", "vertex 1: 5 numbers on the line, expected 6", 4);
   bad("COFF\n3 1 0\n0 0 0\n1 0 0 1 1\n0 1 0\n3 0 1 2\n", "colour of 0, 1, 3 or 4 numbers", 4);
   bad("OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n", "vertex 1: 'x' is not a number", 4);
   bad("OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "not a finite number", 4);

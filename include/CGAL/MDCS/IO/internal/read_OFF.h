@@ -194,11 +194,13 @@ void read_OFF(std::string_view data, const std::string& name, Output& out)
       if(n < 16) numbers[n] = value;
       ++n;
     }
+    // A colour after the numbers the header announces: 0, 1 (a colour map index), 3 or 4 numbers with C; an
+    // RGB or RGBA colour is tolerated without C too (writers that forget the prefix are common).
     const std::size_t colour = n >= fixed ? n - fixed : 0;
-    const bool count_ok = n >= fixed && (header.colour ? (colour == 0 || colour == 1 || colour == 3 || colour == 4) : colour == 0);
+    const bool count_ok = n >= fixed && (colour == 0 || colour == 3 || colour == 4 || (header.colour && colour == 1));
     if(!count_ok)
       fail(lines.line(), "vertex " + std::to_string(i) + ": " + std::to_string(n) + " numbers on the line, expected " +
-                         std::to_string(fixed) + (header.colour ? " plus a colour of 0, 1, 3 or 4 numbers" : "") +
+                         std::to_string(fixed) + (header.colour ? " plus a colour of 0, 1, 3 or 4 numbers" : " (or 3 or 4 more for a colour)") +
                          " for the header '" + header.keyword + "'");
     double x = numbers[0], y = numbers[1], z = dimension == 3 ? numbers[2] : 0.0;
     if(header.homogeneous) {
