@@ -51,10 +51,14 @@ inline const char* geodesics_usage()
     "Geodesic distances on a triangle mesh from one or more sources (CGAL::Polyhedral_geodesics_3: exact interval\n"
     "propagation by default, or an approximate method), shortest paths to targets, a picture and a PLY file with\n"
     "every distance.\n"
-    "  MESH               OFF, PLY, OBJ or STL file, or @torus / @icosphere (generated meshes). Files that are not\n"
-    "                     a valid polygon mesh are repaired (CGAL's soup repair), faces with more than three\n"
-    "                     corners are triangulated; both with a note on stderr. Indices refer to the mesh as used,\n"
-    "                     which distances.ply lists (the file's own order for a valid triangle mesh).\n"
+    "  MESH               OFF, PLY, OBJ or STL file, or @torus / @icosphere (generated meshes). The file must be a\n"
+    "                     valid oriented manifold mesh: otherwise mdcs refuses it (exit 3) and says why (an edge\n"
+    "                     shared by 3 faces, a pinched vertex, inconsistent orientation, a Moebius strip, ...).\n"
+    "                     Faces with more than three corners are triangulated (with a note). Vertex indices are\n"
+    "                     the file's; face indices the file's for a triangle mesh (distances.ply lists the mesh).\n"
+    "  --repair           run CGAL's soup repair on a file that is not a valid mesh instead of refusing it; it\n"
+    "                     changes the surface (merges, reorients, cuts non-manifold parts open): said on stderr\n"
+    "                     and in summary.txt, and indices then refer to the repaired mesh\n"
     "  --source SPEC      comma-separated sources: vertex indices (0,17) and/or surface points f:FACE:B0:B1:B2\n"
     "                     (weights of the face's corners in the order distances.ply lists them; >= 0, normalised)\n"
     "  --targets SPEC     shortest paths to these points, same syntax (default: the farthest reachable vertex)\n"
@@ -169,6 +173,7 @@ struct Geodesics_settings
   bool shorten_paths = false;
   std::string output = "mdcs-output";
   bool quiet = false;
+  bool repair = false; // --repair: CGAL's soup repair on a file that is not a valid mesh
 };
 
 struct Geodesic_target_report
@@ -274,6 +279,8 @@ inline Geodesics_settings parse_geodesics_settings(const Options& o)
   s.output = o.text("output", s.output);
   s.quiet = o.has("quiet");
   o.text("quiet", "");
+  s.repair = o.has("repair");
+  o.text("repair", "");
   return s;
 }
 
@@ -662,7 +669,7 @@ inline Geodesics_run run_geodesics(const Geodesics_settings& s, Progress_bar& pr
   const auto t0 = std::chrono::steady_clock::now();
   Geo_mesh mesh;
   std::vector<std::string> notes;
-  load_geodesics_mesh(s.mesh, mesh, notes);
+  load_geodesics_mesh(s.mesh, mesh, notes, s.repair);
   for(const std::string& note : notes) std::cerr << "mdcs geodesics: note: " << note << "\n";
   const double seconds_read = seconds_since(t0);
   const std::string name = s.mesh[0] == '@' ? s.mesh.substr(1) + " (generated)" : std::filesystem::path(s.mesh).filename().string();

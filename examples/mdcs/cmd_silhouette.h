@@ -302,11 +302,12 @@ inline Run_summary run(const Mesh& fine, const Run_parameters& p, const std::fil
 
 // The mesh reader of the mesh commands (mesh_input.h): OFF / PLY / OBJ / STL, repaired and triangulated when
 // needed (with a note on stderr), or the generated @torus / @icosphere.
-inline Mesh read_triangle_mesh(const std::string& path)
+inline Mesh read_triangle_mesh(const std::string& path, bool repair = false, bool* repaired = nullptr)
 {
   Mesh m;
   std::vector<std::string> notes;
-  load_geodesics_mesh(path, m, notes);
+  const bool was_repaired = load_geodesics_mesh(path, m, notes, repair);
+  if(repaired) *repaired = was_repaired;
   for(const std::string& note : notes) std::cerr << "mdcs silhouette: note: " << note << "\n";
   return m;
 }
@@ -351,7 +352,7 @@ inline Mesh generated_mesh(int levels)
 } // namespace sil_detail
 
 // Names of the options of `mdcs silhouette` that take no value.
-inline std::vector<std::string> silhouette_flags() { return {"orthographic", "quiet", "help"}; }
+inline std::vector<std::string> silhouette_flags() { return {"orthographic", "quiet", "repair", "help"}; }
 
 inline const char* silhouette_usage()
 {
@@ -360,8 +361,10 @@ inline const char* silhouette_usage()
          "  Simplified silhouette of a triangle mesh (thesis chapter 5). A coarse mesh (half-edge collapses,\n"
          "  smoothing) guides the choice of fine silhouette loops (picking, method A) or the minimal-weight\n"
          "  loops of fine edges that follow the coarse silhouette loops (mapping, method B, min cut).\n"
-         "  MESH                OFF, PLY, OBJ or STL (repaired / triangulated when needed, with a note), or the\n"
-         "                      generated @torus / @icosphere\n"
+         "  MESH                OFF, PLY, OBJ or STL, a valid oriented manifold mesh (otherwise refused, exit 3,\n"
+         "                      saying why; larger faces are triangulated), or the generated @torus / @icosphere\n"
+         "  --repair            run CGAL's soup repair on a file that is not a valid mesh instead of refusing it\n"
+         "                      (it changes the surface; said on stderr and in the pictures' titles)\n"
          "  --view A,E          perspective eye at azimuth A and elevation E degrees, 2.5 diagonals away (30,20)\n"
          "  --up x|y|z          the up axis of the orbit (y)\n"
          "  --orthographic      orthographic view along the same direction instead of the perspective eye\n"
@@ -406,10 +409,14 @@ inline int command_silhouette(const Options& o)
   o.text("quiet", "");
   p.orthographic = o.has("orthographic");
   o.text("orthographic", "");
+  const bool repair = o.has("repair");
+  o.text("repair", "");
   o.reject_unknown();
   const std::string path = o.positional()[0];
   p.name = std::filesystem::path(path).filename().string();
-  const Mesh fine = read_triangle_mesh(path);
+  bool repaired = false;
+  const Mesh fine = read_triangle_mesh(path, repair, &repaired);
+  if(repaired) p.name += " (repaired by CGAL's soup repair)";
   const auto folder = prepare_output_folder(out);
   Progress_bar progress(quiet);
   const Run_summary sum = run(fine, p, folder, progress, quiet);
@@ -426,7 +433,17 @@ inline bool demo_silhouette(const std::filesystem::path& folder, bool quick, boo
   Run_parameters p;
   bool generated = false;
   const std::string name = quick ? "elephant.off" : "bunny00.off";
-  if(!dir.empty() && CGAL::IO::read_polygon_mesh(dir + "/" + name, fine) && num_faces(fine) > 0 && CGAL::is_triangle_mesh(fine)) {
+  bool read = false;
+  if(!dir.empty()) {
+    try {
+      std::vector<std::string> notes;
+      load_geodesics_mesh(dir + "/" + name, fine, notes);
+      read = num_faces(fine) > 0;
+    } catch(const Input_error&) {
+      read = false;
+    }
+  }
+  if(read) {
     p.name = name;
     if(!quick) {
       // The thesis's setting: a 20,000-face bunny and a 1,000-face coarse mesh.

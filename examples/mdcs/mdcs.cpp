@@ -50,7 +50,7 @@ int main(int argc, char** argv)
   try {
     if(command == "curve") return command_curve(Options(argc, argv, 2, {"no-local", "quiet", "help"}));
     if(command == "demo") return command_demo(Options(argc, argv, 2, {"quick", "quiet", "help"}));
-    if(command == "geodesics") return command_geodesics(Options(argc, argv, 2, {"stop-at-targets", "compare-exact", "compare-cgal", "quiet", "help"}));
+    if(command == "geodesics") return command_geodesics(Options(argc, argv, 2, {"stop-at-targets", "compare-exact", "compare-cgal", "quiet", "repair", "help"}));
     if(command == "mincut") return command_mincut(Options(argc, argv, 2, {"help"}));
     if(command == "mwt") return command_mwt(Options(argc, argv, 2, mwt_flags()));
     if(command == "surface") return command_surface(Options(argc, argv, 2, surface_flags()));
