@@ -6,7 +6,7 @@
 
 #include "geodesic_surface.h" // Geo_mesh, mesh_from_arrays()
 
-#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/MDCS/IO/read_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -22,16 +22,20 @@ py::tuple read_mesh(const std::string& path)
   if(!std::filesystem::is_regular_file(path, ec)) throw Value_error("mdcs: cannot open '" + path + "' (no such file)");
   std::vector<Geo_point> points;
   std::vector<std::vector<std::size_t>> polygons;
-  bool ok = false;
+  // The library's validating readers: counts checked against the file's size before anything is allocated,
+  // every index and coordinate checked; a Read_error names the file, the line or element, and the problem.
+  std::string error;
   {
     py::gil_scoped_release release;
     try {
-      ok = CGAL::IO::read_polygon_soup(path, points, polygons);
-    } catch(const std::exception&) {
-      ok = false;
+      CGAL::MDCS::IO::read_polygon_soup(path, points, polygons);
+    } catch(const CGAL::MDCS::IO::Read_error& e) {
+      error = e.what();
+    } catch(const std::bad_alloc&) {
+      error = "'" + path + "': not enough memory to read it";
     }
   }
-  if(!ok) throw Value_error("mdcs: cannot read a mesh from '" + path + "' (OFF, PLY, OBJ or STL expected)");
+  if(!error.empty()) throw Value_error("mdcs: cannot read a mesh: " + error);
   if(polygons.empty()) throw Value_error("mdcs: '" + path + "' has no face");
   for(std::size_t f = 0; f < polygons.size(); ++f) {
     if(polygons[f].size() < 3) throw Value_error("mdcs: '" + path + "': face " + std::to_string(f) + " has fewer than 3 corners");

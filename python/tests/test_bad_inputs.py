@@ -170,8 +170,17 @@ def test_bad_files(tmp_path):
         mdcs.io.read_mesh(tmp_path / "missing.off")
     bad = tmp_path / "bad.off"
     bad.write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n")
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match=r"bad\.off:6.*7"):  # the file, the line, the index
         mdcs.io.read_mesh(bad)
+    # a header that claims a billion vertices: refused from the file's size, nothing allocated
+    lying = tmp_path / "lying.off"
+    lying.write_text("OFF\n1000000000 1000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+    with pytest.raises(ValueError, match="lying"):
+        mdcs.io.read_mesh(lying)
+    nan = tmp_path / "nan.off"
+    nan.write_text("OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n")
+    with pytest.raises(ValueError, match=r"nan\.off:4"):
+        mdcs.io.read_mesh(nan)
     garbage = tmp_path / "garbage.off"
     garbage.write_bytes(b"\x00\xff" * 50)
     with pytest.raises(ValueError):
