@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds the whole test suite and runs it with CTest.
-#   scripts/run_tests.sh              default run (Release, long cases excluded)
-#   scripts/run_tests.sh --sanitize   the same under AddressSanitizer + UndefinedBehaviorSanitizer
+#   scripts/run_tests.sh              default run (Release, long cases excluded; C++ and the Python package's pytest)
+#   scripts/run_tests.sh --sanitize   the C++ suite under AddressSanitizer + UndefinedBehaviorSanitizer
 #   scripts/run_tests.sh --long       also run the cases tagged [.long]
 #   scripts/run_tests.sh --tsan       only the parallel test cases (test/*/test_parallel_*.cpp) under ThreadSanitizer
 # Build folders: build/ (or build-sanitize/, build-tsan/) at the repository root.
@@ -29,10 +29,12 @@ if [ "$tsan" = 1 ]; then
   exit 0
 fi
 
-if [ "$sanitize" = ON ]; then build=build-sanitize; type=RelWithDebInfo; else build=build; type=Release; fi
+# The Python package (pytest through CTest) in the Release run only: its extension cannot carry the sanitizers.
+if [ "$sanitize" = ON ]; then build=build-sanitize; type=RelWithDebInfo; python=OFF; else build=build; type=Release; python=ON; fi
 jobs=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=$type -DMDCS_SANITIZE=$sanitize \
-  -DMDCS_BUILD_TESTS=ON -DMDCS_BUILD_EXAMPLES=OFF -DMDCS_BUILD_CLI=ON -DMDCS_BUILD_BENCHMARKS=OFF -DMDCS_BUILD_DOC=OFF >/dev/null
+  -DMDCS_BUILD_TESTS=ON -DMDCS_BUILD_EXAMPLES=OFF -DMDCS_BUILD_CLI=ON -DMDCS_BUILD_BENCHMARKS=OFF -DMDCS_BUILD_DOC=OFF \
+  -DMDCS_BUILD_PYTHON=$python >/dev/null
 cmake --build "$build" -j "$jobs"
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
