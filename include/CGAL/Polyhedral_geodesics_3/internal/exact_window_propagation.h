@@ -4,7 +4,8 @@
 // The exact interval ("window") propagation with side lobes (thesis, chapter 4.1), on the compact mesh.
 //
 // - Every edge holds the lower envelope of its windows: a doubly linked list sorted along the edge.
-// - A window is propagated once, across the face on the far side from its pseudo-source S. On each of
+// - A window is propagated once, across the face on the far side from its pseudo-source S (across every such face
+//   of an edge of three or more faces; each is unfolded on its own, see geodesic_window.h). On each of
 //   the two other edges of that face a point y is reached either straight from S (the segment S-y
 //   crosses the window: the *central* part) or through the nearer end point P0 or P1 of the window
 //   (the *side lobes*, rooted at P0 and P1 with offsets sigma + |S P0|, sigma + |S P1|). A lobe rooted at
@@ -172,14 +173,14 @@ public:
       const FT len = mesh_.he[g].length;
       const FT t = b[(k + 1) % 3] * len;
       insert_piece_no_propagation(g, FT(0), len, t, FT(0), FT(0), id);
-      const Index tw = mesh_.he[g].twin;
-      if(tw >= 0) {
-        const Index f2 = Mesh::face_of(tw);
+      // every other face of the edge (the twin's on an oriented manifold edge)
+      mesh_.for_each_other_halfedge(g, [&](Index tw) {
         std::array<FT, 3> b2 = {FT(0), FT(0), FT(0)};
-        b2[tw % 3] = b[(k + 1) % 3];       // source(tw) == target(g)
-        b2[(tw % 3 + 1) % 3] = b[k];       // target(tw) == source(g)
-        add_point_source_in_face(f2, b2, id);
-      }
+        const bool same = mesh_.same_direction(tw, g);
+        b2[std::size_t(tw % 3)] = same ? b[k] : b[(k + 1) % 3];             // the weight of source(tw)
+        b2[std::size_t((tw % 3 + 1) % 3)] = same ? b[(k + 1) % 3] : b[k];   // the weight of target(tw)
+        add_point_source_in_face(Mesh::face_of(tw), b2, id);
+      });
     }
   }
 
@@ -475,17 +476,22 @@ private:
   }
 
   // ------------------------------------------------------------------------------------------------
-  // Propagation of one window across the face it looks into
+  // Propagation of one window across the faces it looks into: the twin's face on an edge of an oriented manifold,
+  // every face but the one it comes from on a non-manifold edge.
 
   void propagate(Index wi)
   {
+    const Index from = windows_[std::size_t(wi)].from_halfedge;
+    mesh_.for_each_other_halfedge(from, [&](Index h) { propagate_into(wi, h); });
+  }
+
+  void propagate_into(Index wi, Index h)
+  {
     const Window& w = windows_[std::size_t(wi)];
-    const Index h = w.into_halfedge;
     const Index source = w.source;
     const Local_window<FT> lw_in = local_window(w, h);
     const Index prev_w = w.prev, next_w = w.next;
-    const Index edge = w.edge;
-    const bool canonical = (h == mesh_.edge_halfedge[std::size_t(edge)]);
+    const bool canonical = this->runs_like_canonical(h);
     const FT L = mesh_.he[std::size_t(h)].length;
     const Point_2_ft<FT> c = mesh_.he[std::size_t(h)].opposite;
     const Index va = mesh_.source(h), vb = mesh_.target(h), vc = mesh_.opposite_vertex(h);
@@ -578,7 +584,7 @@ private:
     if(n < 0)
       return false;
     const Window& nw = windows_[std::size_t(n)];
-    if(nw.into_halfedge != h)
+    if(!this->propagates_into(nw.from_halfedge, h))
       return false;
     const Local_window<FT> ln = local_window(nw, h);
     return at_start ? ln.b1 == x : ln.b0 == x;

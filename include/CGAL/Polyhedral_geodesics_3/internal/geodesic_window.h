@@ -8,6 +8,14 @@
 // Frames. Every compact halfedge h has a planar frame: source(h) at (0,0), target(h) at (L,0), the face
 // of h on the side y >= 0. A window is stored in the frame of its edge's canonical halfedge; the frame of
 // the twin is the mirror image x -> L - x, y -> -y.
+//
+// Sides. A window lies on one side of its edge: its pseudo-source is on the side of the face of its
+// `from_halfedge` (the face it crossed, or the face of the vertex or point it comes from), and it propagates into
+// the face of every other halfedge of the edge: the twin on an edge of an oriented manifold, every other face of a
+// non-manifold edge. Each of those faces is unfolded on its own across the edge, opposite the from face, so no
+// global orientation is needed: where two faces run through the edge in the same direction (a reversed edge, as
+// where a Moebius strip closes), the unfolding is the reflection y -> -y alone. Window_field::local_window()
+// gives a window in the frame of any halfedge of its edge.
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_WINDOW_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_WINDOW_H
@@ -35,7 +43,7 @@ struct alignas(64) Geodesic_window
   FT sx, sy;     // the pseudo-source in the edge frame
   FT sigma;      // the distance from the source to the pseudo-source
   Index edge;
-  Index into_halfedge;    // the halfedge whose face the window propagates into, -1 if none
+  Index from_halfedge;    // the window propagates into the faces of the other halfedges of its edge; -1: into none
   Index source;           // index of the source the window's paths start from
   std::uint32_t stamp : 30; // incremented whenever the window changes or dies (lazy deletion in the queue)
   std::uint32_t processed : 1; // already propagated

@@ -109,7 +109,7 @@ protected:
 
   // Links a new window after `after` (-1: at the front of the edge's list).
   Index create_window(Index edge, Index after, const FT& b0, const FT& b1, const FT& sx, const FT& sy,
-                      const FT& sigma, Index into, Index source, bool processed)
+                      const FT& sigma, Index from, Index source, bool processed)
   {
     const Index wi = allocate_window();
     Window& w = windows_[std::size_t(wi)];
@@ -120,10 +120,10 @@ protected:
     w.sy = sy;
     w.sigma = sigma;
     w.edge = edge;
-    w.into_halfedge = into;
+    w.from_halfedge = from;
     w.source = source;
     ++w.stamp;
-    w.processed = processed || into < 0;
+    w.processed = processed || from < 0;
     w.alive = true;
     if(after < 0) {
       w.next = edge_first_[std::size_t(edge)];
@@ -179,10 +179,11 @@ protected:
   }
 
   // Inserts the candidate window [t0, t1] with pseudo-source (sx, sy) and offset sigma, given in the
-  // frame of halfedge g, into the lower envelope of g's edge. It propagates into the face of g's twin.
+  // frame of halfedge g (the pseudo-source on the side of g's face), into the lower envelope of g's edge. It
+  // propagates into the faces of the other halfedges of the edge (none on a border edge).
   void insert_piece(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source)
   {
-    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, mesh_.he[std::size_t(g)].twin);
+    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, mesh_.he[std::size_t(g)].radial == g ? Index(-1) : g);
   }
 
   void insert_piece_no_propagation(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source)
@@ -190,12 +191,13 @@ protected:
     insert_piece_impl(g, t0, t1, sx, sy, sigma, source, -1);
   }
 
-  void insert_piece_impl(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source, Index into)
+  void insert_piece_impl(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source, Index from)
   {
     const Index e = mesh_.he[std::size_t(g)].edge;
     const Index hc = mesh_.edge_halfedge[std::size_t(e)];
     const FT L = mesh_.he[std::size_t(g)].length;
-    if(g != hc) {
+    if(!this->runs_like_canonical(g)) {
+      // into the canonical frame (see Window_field::local_window for the sign of sy)
       const FT n0 = L - t1, n1 = L - t0;
       t0 = n0;
       t1 = n1;
@@ -226,7 +228,7 @@ protected:
           return;
         kill_window(old);
       }
-      create_window(e, -1, FT(0), FT(0), sx, sy, sigma, into, source, false);
+      create_window(e, -1, FT(0), FT(0), sx, sy, sigma, from, source, false);
       return;
     }
     const FT tiny = relative_tolerance_ * L;
@@ -311,7 +313,7 @@ protected:
       }
       const bool changed = remain_.front().lo != v.b0 || remain_.front().hi != v.b1;
       const FT vsx = v.sx, vsy = v.sy, vsigma = v.sigma;
-      const Index vinto = v.into_halfedge, vsource = v.source;
+      const Index vfrom = v.from_halfedge, vsource = v.source;
       const bool vprocessed = v.processed;
       v.b0 = remain_.front().lo;
       v.b1 = remain_.front().hi;
@@ -322,7 +324,7 @@ protected:
       }
       Index after = c.window;
       for(std::size_t i = 1; i < remain_.size(); ++i)
-        after = create_window(e, after, remain_[i].lo, remain_[i].hi, vsx, vsy, vsigma, vinto, vsource, vprocessed);
+        after = create_window(e, after, remain_[i].lo, remain_[i].hi, vsx, vsy, vsigma, vfrom, vsource, vprocessed);
     }
     changes_win_.clear();
 
@@ -336,7 +338,7 @@ protected:
       }
       // A window split by a vertex meets itself again on the edges beyond: join the pieces of one
       // distance function instead of propagating them separately.
-      if(after >= 0 && same_function(windows_[std::size_t(after)], sx, sy, sigma, into) &&
+      if(after >= 0 && same_function(windows_[std::size_t(after)], sx, sy, sigma, from) &&
          windows_[std::size_t(after)].b1 == iv.lo) {
         Window& p = windows_[std::size_t(after)];
         p.b1 = iv.hi;
@@ -346,15 +348,15 @@ protected:
         propagation().push(after);
         continue;
       }
-      after = create_window(e, after, iv.lo, iv.hi, sx, sy, sigma, into, source, false);
+      after = create_window(e, after, iv.lo, iv.hi, sx, sy, sigma, from, source, false);
       merge_with_next(after);
     }
   }
 
-  bool same_function(const Window& w, const FT& sx, const FT& sy, const FT& sigma, Index into) const
+  bool same_function(const Window& w, const FT& sx, const FT& sy, const FT& sigma, Index from) const
   {
     using std::abs;
-    if(w.processed || w.into_halfedge != into)
+    if(w.processed || w.from_halfedge != from)
       return false;
     const FT scale = abs(sx) + abs(sy) + sigma + (w.b1 - w.b0);
     const FT tol = FT(16) * relative_tolerance_ * scale;
@@ -369,7 +371,7 @@ protected:
     if(ni < 0)
       return;
     const Window& n = windows_[std::size_t(ni)];
-    if(n.b0 != w.b1 || !same_function(n, w.sx, w.sy, w.sigma, w.into_halfedge) || w.processed)
+    if(n.b0 != w.b1 || !same_function(n, w.sx, w.sy, w.sigma, w.from_halfedge) || w.processed)
       return;
     const FT b1 = n.b1;
     kill_window(ni);
@@ -401,7 +403,7 @@ protected:
         if(ni < 0)
           break;
         const Window& n = windows_[std::size_t(ni)];
-        if(n.processed || n.into_halfedge != w.into_halfedge || (side == 0 ? n.b0 != w.b1 : n.b1 != w.b0))
+        if(n.processed || n.from_halfedge != w.from_halfedge || (side == 0 ? n.b0 != w.b1 : n.b1 != w.b0))
           break;
         const FT w_over_n = merge_deviation(w, n), n_over_w = merge_deviation(n, w);
         if(w_over_n < FT(0) && n_over_w < FT(0))
