@@ -4,8 +4,8 @@
 //    therefore the same results in every class and mode (distances, nearest sources, point queries, path
 //    sequences in indices), bit for bit: on Surface_mesh and Polyhedron_3, closed and with borders, with vertex
 //    and surface-point sources, limits and stop targets.
-//  - Objects built on one surface share it (nothing is rebuilt), and one object per thread on one surface gives,
-//    on 1, 2, 3 and 8 threads, the same distances as one object after another.
+//  - Objects built on one surface share it (nothing is rebuilt); one object per thread on one surface is in
+//    test_parallel_geodesic_surface.cpp.
 //  - Bad soups are refused with a message that names the problem: an index out of range or negative, a repeated
 //    corner, a polygon that is not a triangle, a NaN or infinite coordinate, null arrays, an edge of too many faces,
 //    an index out of range given to a class.
@@ -24,14 +24,12 @@
 #include <CGAL/property_map.h>
 
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -336,54 +334,6 @@ TEST_CASE("geodesic surface: objects of every class share one surface", "[geodes
   CHECK(surface->number_of_vertices() == soup.points.size());
   CHECK(surface->number_of_faces() == soup.triangles.size());
   CHECK(surface->number_of_edges() == 3 * soup.triangles.size() / 2);
-}
-
-TEST_CASE("geodesic surface: one object per thread on a shared surface, 1, 2, 3 and 8 threads",
-          "[geodesics][surface][threads]")
-{
-  const MDCS_test::Triangle_soup<Point_3> soup = MDCS_test::icosphere<Point_3>(3);
-  const auto surface = PG::make_geodesic_surface(soup.points, soup.triangles);
-  const std::size_t nv = soup.points.size(), sources = 16;
-  // one object after another
-  std::vector<std::vector<double>> serial(sources), serial_flat(sources);
-  for(std::size_t s = 0; s < sources; ++s) {
-    PG::Exact_geodesic_distances_3<Soup> exact(surface, PG::Geodesic_memory_mode::distances_only);
-    exact.add_source(s * 37 % nv);
-    serial[s].resize(nv);
-    exact.distances(CGAL::make_property_map(serial[s]));
-    PG::Flat_exact_geodesic_distances_3<Soup> flat(surface);
-    flat.add_source(s * 37 % nv);
-    serial_flat[s].resize(nv);
-    flat.distances(CGAL::make_property_map(serial_flat[s]));
-  }
-  for(std::size_t threads : {1, 2, 3, 8}) {
-    INFO(threads << " threads");
-    std::vector<std::vector<double>> rows(sources, std::vector<double>(nv)), flat_rows = rows;
-    std::atomic<std::size_t> next(0);
-    std::vector<std::thread> pool;
-    for(std::size_t t = 0; t < threads; ++t)
-      pool.emplace_back([&]() {
-        // one solver per thread, reused for every source it takes
-        PG::Exact_geodesic_distances_3<Soup> exact(surface, PG::Geodesic_memory_mode::distances_only);
-        PG::Flat_exact_geodesic_distances_3<Soup> flat(surface);
-        for(std::size_t s; (s = next++) < sources;) {
-          exact.clear_sources();
-          exact.add_source(s * 37 % nv);
-          exact.distances(CGAL::make_property_map(rows[s]));
-          flat.clear_sources();
-          flat.add_source(s * 37 % nv);
-          flat.distances(CGAL::make_property_map(flat_rows[s]));
-        }
-      });
-    for(auto& t : pool)
-      t.join();
-    std::size_t differing = 0;
-    for(std::size_t s = 0; s < sources; ++s)
-      for(std::size_t v = 0; v < nv; ++v)
-        if(!same_bits(rows[s][v], serial[s][v]) || !same_bits(flat_rows[s][v], serial_flat[s][v]))
-          ++differing;
-    CHECK(differing == 0);
-  }
 }
 
 namespace {

@@ -207,7 +207,7 @@ public:
             stopped_early_ = true;
             break;
           }
-          expand_vertex(v);
+          expand_vertex(v, !is_bend_vertex(v));
           continue;
         }
         Window& w = windows_[std::size_t(top.window)];
@@ -443,7 +443,8 @@ private:
   // side lobes rooted at the vertex, emitted once, when its distance is final, instead of by every window
   // that ends there (those lobes would carry the window's own, possibly larger, value at the vertex; and
   // pruning may remove the window that would have carried the best one).
-  void expand_vertex(Index v)
+  // `filler`: the vertex is not one where shortest paths bend (see Window_edge_envelope::mergeable_over).
+  void expand_vertex(Index v, bool filler = false)
   {
     ensure_vertex_star();
     expanded_stamp_[std::size_t(v)] = vertex_stamp_[std::size_t(v)];
@@ -453,7 +454,7 @@ private:
       const Index h = star_[std::size_t(k)];  // source(h) == v
       const Index g = Mesh::next(h);          // the edge opposite v in the face of h
       const auto& p = mesh_.he[std::size_t(g)].opposite;
-      insert_piece(g, FT(0), mesh_.he[std::size_t(g)].length, p.x, p.y, d, id);
+      insert_piece(g, FT(0), mesh_.he[std::size_t(g)].length, p.x, p.y, d, id, filler);
       insert_piece_no_propagation(h, FT(0), mesh_.he[std::size_t(h)].length, FT(0), FT(0), d, id);
       const Index hp = Mesh::prev(h);
       insert_piece_no_propagation(hp, FT(0), mesh_.he[std::size_t(hp)].length, mesh_.he[std::size_t(hp)].length,
@@ -473,6 +474,18 @@ private:
         continue; // the point is on this edge: handled by the caller
       insert_piece(g, FT(0), mesh_.he[std::size_t(g)].length, p.x, p.y, FT(0), id);
     }
+  }
+
+  // A vertex where shortest paths can bend, strictly (for merging; the exact rule, is_saddle_or_boundary_vertex,
+  // also takes flat vertices and every border vertex): a singular vertex, a saddle, or a border vertex whose angle
+  // sum exceeds pi, with a margin of 1e-9 for rounding.
+  bool is_bend_vertex(Index v) const
+  {
+    const double pi = 3.14159265358979323846;
+    const std::size_t i = std::size_t(v);
+    if(!mesh_.vertex_is_singular.empty() && mesh_.vertex_is_singular[i])
+      return true;
+    return to_double_value(mesh_.vertex_angle_sum[i]) > (mesh_.vertex_on_boundary[i] ? pi : 2 * pi) + 1e-9;
   }
 
   // ------------------------------------------------------------------------------------------------
@@ -541,7 +554,12 @@ private:
     else dc = lw.sigma + distance_2(lw.sx, lw.sy, c.x, c.y);
     update_vertex(vc, dc, source);
 
-    const Propagation_data pd{lw, d_p0, d_p1, xc, flat_source, lobe0, lobe1, source, h};
+    // Fillers (for merging): the children of a filler, and the side lobes rooted inside the edge (gap fillers) or at a
+    // vertex where no path bends.
+    const bool filler = windows_[std::size_t(wi)].filler;
+    const bool lobe0_filler = lw.b0 > FT(0) || !is_bend_vertex(va);
+    const bool lobe1_filler = lw.b1 < L || !is_bend_vertex(vb);
+    const Propagation_data pd{lw, d_p0, d_p1, xc, flat_source, lobe0, lobe1, filler, lobe0_filler, lobe1_filler, source, h};
     // edge C->A (halfedge prev(h)), walked from A (u = 0) to C (u = 1)
     emit_pieces(pd, Mesh::prev(h), FT(0), FT(0), c, FT(0), true);
     // edge B->C (halfedge next(h)), walked from B (u = 0) to C (u = 1)
@@ -595,6 +613,7 @@ private:
     Local_window<FT> w;
     FT d_p0, d_p1, xc;
     bool flat_source, lobe0, lobe1;
+    bool filler, lobe0_filler, lobe1_filler;
     Index source, h;
   };
 
@@ -643,17 +662,17 @@ private:
     }
     // P is source(h) or target(h); in the frame of g the target-edge points are source(g) + t e.
     if(ub > ua || (len == FT(0) && ub == FT(1)))
-      emit_one(pd, g, px, py, c, reversed, ua, ub, w.sx, w.sy, w.sigma);
+      emit_one(pd, g, px, py, c, reversed, ua, ub, w.sx, w.sy, w.sigma, pd.filler);
     if(pd.lobe0 && (l0b > l0a || (len == FT(0) && l0b == FT(1))))
-      emit_one(pd, g, px, py, c, reversed, l0a, l0b, w.b0, FT(0), pd.d_p0);
+      emit_one(pd, g, px, py, c, reversed, l0a, l0b, w.b0, FT(0), pd.d_p0, pd.lobe0_filler);
     if(pd.lobe1 && (l1b > l1a || (len == FT(0) && l1b == FT(1))))
-      emit_one(pd, g, px, py, c, reversed, l1a, l1b, w.b1, FT(0), pd.d_p1);
+      emit_one(pd, g, px, py, c, reversed, l1a, l1b, w.b1, FT(0), pd.d_p1, pd.lobe1_filler);
   }
 
   // Inserts the part [ua, ub] of the target edge (P + u (C - P)) with pseudo-source (qx, qy) of the h
   // frame and offset sigma, converting to the frame of the target halfedge g.
   void emit_one(const Propagation_data& pd, Index g, const FT& px, const FT& py, const Point_2_ft<FT>& c,
-                bool reversed, const FT& ua, const FT& ub, const FT& qx, const FT& qy, const FT& sigma)
+                bool reversed, const FT& ua, const FT& ub, const FT& qx, const FT& qy, const FT& sigma, bool filler)
   {
     using std::sqrt;
     const FT len = mesh_.he[std::size_t(g)].length;
@@ -676,7 +695,7 @@ private:
     else         { t0 = len * ua; t1 = len * ub; }
     if(ua == FT(0)) { if(reversed) t1 = len; else t0 = FT(0); }
     if(ub == FT(1)) { if(reversed) t0 = FT(0); else t1 = len; }
-    insert_piece(g, t0, t1, sx, sy, sigma, pd.source);
+    insert_piece(g, t0, t1, sx, sy, sigma, pd.source, filler);
   }
 
 
