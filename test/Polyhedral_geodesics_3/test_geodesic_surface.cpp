@@ -23,6 +23,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/property_map.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -164,7 +166,7 @@ void check_same_results(A& a, B& b, const TM& tm, bool full_field, const std::st
   const auto vim = CGAL::get_initialized_vertex_index_map(tm);
   const auto fim = CGAL::get_initialized_face_index_map(tm);
   std::vector<double> da(num_vertices(tm), -1), db(num_vertices(tm), -2);
-  a.distances(CGAL::make_property_map(da));
+  a.distances(boost::make_iterator_property_map(da.begin(), vim));
   b.distances(CGAL::make_property_map(db));
   std::size_t differing = 0, finite = 0;
   for(auto v : vertices(tm)) {
