@@ -4,9 +4,9 @@
 // The engine behind Exact_geodesic_distances_3 (and Merged_window_geodesic_distances_3): it picks, per run, one of
 // the two exact propagations.
 //
-// - Vertex-oriented (vertex_oriented_propagation.h): every exact run, in both memory modes. In full_field mode it
-//   records how each vertex got its distance, and paths and point queries run from that record
-//   (vertex_oriented_paths.h); distance limits and stop targets are its own.
+// - Vertex-oriented (vertex_oriented_propagation.h): distances_only runs; with set_vertex_oriented_full_field(true)
+//   every exact run, in both memory modes. In full_field mode it records how each vertex got its distance, and paths
+//   and point queries run from that record (vertex_oriented_paths.h); distance limits and stop targets are its own.
 // - Window-ordered (exact_window_propagation.h, the thesis's propagation with side lobes, which keeps the lower
 //   envelope of every edge): when set_vertex_oriented_allowed(false) asks for it (the independent oracle of the
 //   tests), on meshes with a zero-area face (where the vertex-oriented schedule missed paths along the line of such
@@ -78,6 +78,11 @@ public:
   // false: every run uses the window-ordered engine (for comparisons and its statistics).
   void set_vertex_oriented_allowed(bool allowed) { vertex_oriented_allowed_ = allowed; }
   bool vertex_oriented_allowed() const { return vertex_oriented_allowed_; }
+  // true: the full field, distance limits and stop targets run on the vertex-oriented schedule too (paths and point
+  // queries from its Parent records, vertex_oriented_paths.h). Off by default until the whole test suite has been
+  // moved to it; the window propagation serves those runs meanwhile.
+  void set_vertex_oriented_full_field(bool enable) { vertex_oriented_full_field_ = enable; }
+  bool vertex_oriented_full_field() const { return vertex_oriented_full_field_; }
   // The engine of the last run (or of the run being prepared).
   bool uses_vertex_oriented_engine() const { return use_vertex_engine_; }
 
@@ -156,8 +161,9 @@ private:
       return;
     chosen_ = true;
     const bool merging = merge_tolerance_ > FT(0);
+    const bool needs_records = keep_windows_ || has_limit_ || !stop_targets_.empty();
     use_vertex_engine_ = vertex_oriented_allowed_ && !has_zero_area_face_ && !has_special_edges_ &&
-                         !(merging && (keep_windows_ || has_limit_ || !stop_targets_.empty()));
+                         !(needs_records && (merging || !vertex_oriented_full_field_));
     if(use_vertex_engine_) {
       Vertex_engine& v = vertex_engine();
       v.set_record_parents(keep_windows_);
@@ -203,7 +209,7 @@ private:
   std::unique_ptr<Vertex_engine> vertex_;
   std::unique_ptr<Vertex_oriented_paths<FT>> paths_;
   bool keep_windows_ = true, has_limit_ = false, chosen_ = false, use_vertex_engine_ = false;
-  bool vertex_oriented_allowed_ = true;
+  bool vertex_oriented_allowed_ = true, vertex_oriented_full_field_ = false;
   bool has_zero_area_face_ = false;
   bool has_special_edges_ = false;
   FT limit_ = FT(0), merge_tolerance_ = FT(0);
