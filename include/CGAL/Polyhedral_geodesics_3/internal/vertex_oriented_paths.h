@@ -110,8 +110,12 @@ public:
         walk_chain(*backward_, u, [&](const Path_node& n) { head.push_back(n); });
       } else {
         head.push_back(edge_path_node(mesh_, g, FT(x / L)));
-        walk_segment(*backward_, g, x, q.window.sx, q.window.sy, q.window.root,
-                     [&](const Path_node& n) { head.push_back(n); });
+        // the window's pseudo-source is p, or a saddle or boundary vertex of the backward run (then its chain
+        // goes on to p), or a vertex the line passes within rounding of
+        const Index u = walk_segment(*backward_, g, x, q.window.sx, q.window.sy, q.window.root,
+                                     [&](const Path_node& n) { head.push_back(n); });
+        if(u >= 0)
+          walk_chain(*backward_, u, [&](const Path_node& n) { head.push_back(n); });
       }
     }
     // head ends at p (a face node of the backward run's source face): report the caller's location instead
