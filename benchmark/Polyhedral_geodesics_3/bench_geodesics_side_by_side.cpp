@@ -6,11 +6,11 @@
 //       writes the mesh NAME as the benchmark's binary mesh file. NAME is a mesh of the CGAL demo folder
 //       (MDCS_CGAL_MESH_DIR or --mesh-dir) or of --extra-dir, by its file stem, optionally followed by -loopK
 //       (K steps of Loop subdivision), e.g. armadillo-loop2. Faces are triangulated and isolated vertices removed.
-//   bench_geodesics_side_by_side run --mesh FILE [--source I] [--mode distances_only|full_field] [--paths K]
-//       [--threads N] [--distances-out FILE]
+//   bench_geodesics_side_by_side run --mesh FILE [--source I] [--mode distances_only|full_field|full_field_windows]
+//       [--paths K] [--threads N] [--distances-out FILE]
 //       Exact_geodesic_distances_3 on that mesh, timed like the other drivers (see side_by_side_driver.h): the
-//       class's construction (the compact mesh), the propagation, every vertex distance read, and in full_field
-//       mode K shortest paths (to the vertices (2i+1)n/2K). Prints one RESULT line with the engine's counters.
+//       class's construction (the compact mesh), the propagation, every vertex distance read, and in the full_field
+//       modes K shortest paths (to the vertices (2i+1)n/2K). Prints one RESULT line with the engine's counters.
 #include <geodesic_bench_common.h>
 
 #include "side_by_side/side_by_side_driver.h"
@@ -33,7 +33,7 @@ namespace {
 int usage()
 {
   std::cerr << "usage: bench_geodesics_side_by_side prepare --name NAME[-loopK] --out FILE [--mesh-dir DIR] [--extra-dir DIR]\n"
-               "       bench_geodesics_side_by_side run --mesh FILE [--source I] [--mode distances_only|full_field]"
+               "       bench_geodesics_side_by_side run --mesh FILE [--source I] [--mode distances_only|full_field|full_field_windows]"
                " [--paths K] [--threads N] [--distances-out FILE]\n";
   return 2;
 }
@@ -102,7 +102,10 @@ int run(int argc, char** argv)
   std::vector<char*> args(argv, argv + argc);
   args.erase(args.begin() + 1);
   const side_by_side::Options o = side_by_side::Options::parse(int(args.size()), args.data());
-  const bool full = o.mode == "full_field";
+  // full_field: the vertex-oriented schedule's records (set_vertex_oriented_full_field); full_field_windows: the
+  // window propagation's full field (the class's default until the records are its default)
+  const bool windows = o.mode == "full_field_windows";
+  const bool full = o.mode == "full_field" || windows;
   if(!full && o.mode != "distances_only")
     return usage();
   side_by_side::Mesh_arrays arrays;
@@ -134,6 +137,7 @@ int run(int argc, char** argv)
   {
     PG::Exact_geodesic_distances_3<Mesh> geodesics(
       mesh, full ? PG::Geodesic_memory_mode::full_field : PG::Geodesic_memory_mode::distances_only);
+    geodesics.set_vertex_oriented_full_field(!windows);
     geodesics.add_source(Vertex(Mesh::size_type(o.source)));
     geodesics.compute();
     geodesics.distances(Distance_vector_map{&distances});

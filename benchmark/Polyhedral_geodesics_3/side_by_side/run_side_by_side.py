@@ -156,7 +156,7 @@ def main():
     ap.add_argument('--mesh-dir', help='folder of the CGAL demo meshes (default: the MDCS build\'s)')
     ap.add_argument('--extra-dir', help='another folder of meshes, e.g. ../shared/data')
     ap.add_argument('--runs', type=int, default=5, help='rounds (every method once per round)')
-    ap.add_argument('--methods', default='MDCS:distances_only,MDCS:full_field,VTP:distances_only,Kirsanov:full_field',
+    ap.add_argument('--methods', default='MDCS:distances_only,MDCS:full_field,MDCS:full_field_windows,VTP:distances_only,Kirsanov:full_field',
                     help='LIBRARY:MODE[:THREADS] list; libraries MDCS, VTP, Kirsanov')
     ap.add_argument('--paths', type=int, default=10, help='shortest paths traced in full_field mode')
     ap.add_argument('--source', type=int, default=0, help='source vertex')
@@ -239,7 +239,7 @@ def main():
                 if library == 'MDCS':
                     command.append('run')
                 command += ['--mesh', mesh_file, '--source', str(args.source), '--mode', mode]
-                if mode == 'full_field':
+                if mode.startswith('full_field'):
                     command += ['--paths', str(args.paths)]
                 if threads != 1:
                     command += ['--threads', str(threads)]
