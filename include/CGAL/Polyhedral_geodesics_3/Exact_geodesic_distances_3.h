@@ -119,6 +119,21 @@ public:
   /// See `set_vertex_oriented_propagation()`.
   bool vertex_oriented_propagation() const { return this->engine_const().vertex_oriented_allowed(); }
 
+  /// Whether `full_field` runs, distance limits and stop targets also use the vertex-oriented schedule (default
+  /// `false`: they use the window propagation). Then a full field keeps, per vertex, how it got its distance
+  /// instead of the windows of every edge; shortest paths walk back along those records, and a distance or nearest
+  /// source at a `Face_location` runs a second propagation from that point, bounded by the vertex distances.
+  /// Same results as the window propagation (1e-12 relative). Not used on meshes where the vertex-oriented
+  /// schedule is not (see `set_vertex_oriented_propagation()`).
+  void set_vertex_oriented_full_field(bool enable)
+  {
+    this->engine().set_vertex_oriented_full_field(enable);
+    this->invalidate();
+  }
+
+  /// See `set_vertex_oriented_full_field()`.
+  bool vertex_oriented_full_field() const { return this->engine_const().vertex_oriented_full_field(); }
+
   /// Whether the last propagation used the vertex-oriented schedule.
   bool used_vertex_oriented_propagation() const { return this->engine_const().uses_vertex_oriented_engine(); }
 };

@@ -1,12 +1,17 @@
 // Copyright (c) 2026 MDCS contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The engine behind Exact_geodesic_distances_3: it picks, per run, one of the two exact propagations.
+// The engine behind Exact_geodesic_distances_3 (and Merged_window_geodesic_distances_3): it picks, per run, one of
+// the two exact propagations.
 //
-// - Vertex-oriented (vertex_oriented_propagation.h): distances at the vertices only, several times faster;
-//   used for distances_only runs without a distance limit or stop targets.
-// - Window-ordered (exact_window_propagation.h, the thesis's propagation with side lobes): the full field for
-//   point queries and paths, and the early stop at a limit or at targets (its front is a distance).
+// - Vertex-oriented (vertex_oriented_propagation.h): distances_only runs; with set_vertex_oriented_full_field(true)
+//   every exact run, in both memory modes. In full_field mode it records how each vertex got its distance, and paths
+//   and point queries run from that record (vertex_oriented_paths.h); distance limits and stop targets are its own.
+// - Window-ordered (exact_window_propagation.h, the thesis's propagation with side lobes, which keeps the lower
+//   envelope of every edge): when set_vertex_oriented_allowed(false) asks for it (the independent oracle of the
+//   tests), on meshes with a zero-area face (where the vertex-oriented schedule missed paths along the line of such
+//   faces), and for interval merging with the full field, a limit or stop targets (Merged_window_geodesic_distances_3
+//   keeps its earlier behaviour there).
 //
 // The facade calls clear(), then the option setters, then adds the sources: the choice is made at the first
 // source, when every option is known. Both engines are built on first use only.
@@ -17,6 +22,7 @@
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/exact_window_propagation.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_paths.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_propagation.h>
 
 #include <array>
@@ -41,7 +47,7 @@ public:
     // A face of zero area (three collinear corners, or a zero-length edge) makes the vertex-oriented schedule
     // miss shortest paths that run along the line of such faces: from vertex 2 of CGAL's degtri_sliding.off it
     // gave 3 at vertex 7, where the window propagation (and every small perturbation of the mesh) gives
-    // sqrt(5). On such meshes distances_only runs use the window propagation.
+    // sqrt(5). On such meshes every run uses the window propagation.
     for(const Geodesic_halfedge<FT>& r : mesh_.he)
       if(!(r.opposite.y > FT(0)) || r.length == FT(0)) {
         has_zero_area_face_ = true;
@@ -69,9 +75,14 @@ public:
   // Interval merging (Merged_window_geodesic_distances_3): both engines merge with the same rule.
   void set_merge_tolerance(const FT& tolerance) { merge_tolerance_ = tolerance; }
 
-  // false: distances_only runs use the window-ordered engine too (for comparisons and its statistics).
+  // false: every run uses the window-ordered engine (for comparisons and its statistics).
   void set_vertex_oriented_allowed(bool allowed) { vertex_oriented_allowed_ = allowed; }
   bool vertex_oriented_allowed() const { return vertex_oriented_allowed_; }
+  // true: the full field, distance limits and stop targets run on the vertex-oriented schedule too (paths and point
+  // queries from its Parent records, vertex_oriented_paths.h). Off by default until the whole test suite has been
+  // moved to it; the window propagation serves those runs meanwhile.
+  void set_vertex_oriented_full_field(bool enable) { vertex_oriented_full_field_ = enable; }
+  bool vertex_oriented_full_field() const { return vertex_oriented_full_field_; }
   // The engine of the last run (or of the run being prepared).
   bool uses_vertex_oriented_engine() const { return use_vertex_engine_; }
 
@@ -93,8 +104,13 @@ public:
   void run(Progress& progress)
   {
     choose();
-    if(use_vertex_engine_) vertex_engine().run(progress);
-    else window_engine().run(progress);
+    if(use_vertex_engine_) {
+      if(paths_)
+        paths_->invalidate();
+      vertex_engine().run(progress);
+    } else {
+      window_engine().run(progress);
+    }
   }
 
   FT vertex_distance(Index v) const
@@ -107,17 +123,21 @@ public:
     return use_vertex_engine_ ? vertex_->vertex_source(v) : windows_->vertex_source(v);
   }
 
-  // Point queries and paths need the full field, which only the window-ordered engine keeps (the facade
-  // checks the memory mode first).
-  Geodesic_point_distance<FT> distance_at(Index f, const std::array<FT, 3>& b) const
+  // Point queries and paths (the facade checks the memory mode first).
+  Geodesic_point_distance<FT> distance_at(Index f, const std::array<FT, 3>& b)
   {
+    if(use_vertex_engine_)
+      return paths().distance_at(*vertex_, f, b);
     return windows_->distance_at(f, b);
   }
 
   template <class Emit>
-  void trace_path(Index f, const std::array<FT, 3>& b, Emit emit) const
+  void trace_path(Index f, const std::array<FT, 3>& b, Emit emit)
   {
-    windows_->trace_path(f, b, emit);
+    if(use_vertex_engine_)
+      paths().trace_path(*vertex_, f, b, emit);
+    else
+      windows_->trace_path(f, b, emit);
   }
 
   const Geodesic_statistics& statistics() const
@@ -127,18 +147,31 @@ public:
     return windows_ ? windows_->statistics() : none;
   }
 
+  // The vertex-oriented engine of the last run, and the counters of the last point query's propagation (tests).
+  const Vertex_engine* vertex_oriented_engine() const { return use_vertex_engine_ ? vertex_.get() : nullptr; }
+  const Geodesic_statistics* last_point_query_statistics() const
+  {
+    return paths_ ? paths_->last_query_statistics() : nullptr;
+  }
+
 private:
   void choose()
   {
     if(chosen_)
       return;
     chosen_ = true;
-    use_vertex_engine_ =
-        vertex_oriented_allowed_ && !has_zero_area_face_ && !has_special_edges_ && !keep_windows_ && !has_limit_ &&
-        stop_targets_.empty();
+    const bool merging = merge_tolerance_ > FT(0);
+    const bool needs_records = keep_windows_ || has_limit_ || !stop_targets_.empty();
+    use_vertex_engine_ = vertex_oriented_allowed_ && !has_zero_area_face_ && !has_special_edges_ &&
+                         !(needs_records && (merging || !vertex_oriented_full_field_));
     if(use_vertex_engine_) {
-      vertex_engine().clear();
-      vertex_engine().set_merge_tolerance(merge_tolerance_);
+      Vertex_engine& v = vertex_engine();
+      v.set_record_parents(keep_windows_);
+      v.set_merge_tolerance(merge_tolerance_);
+      if(has_limit_) v.set_distance_limit(limit_);
+      else v.clear_distance_limit();
+      v.set_stop_targets(stop_targets_);
+      v.clear();
       return;
     }
     Window_engine& w = window_engine();
@@ -164,11 +197,19 @@ private:
     return *vertex_;
   }
 
+  Vertex_oriented_paths<FT>& paths()
+  {
+    if(!paths_)
+      paths_.reset(new Vertex_oriented_paths<FT>(mesh_));
+    return *paths_;
+  }
+
   const Mesh& mesh_;
   std::unique_ptr<Window_engine> windows_;
   std::unique_ptr<Vertex_engine> vertex_;
+  std::unique_ptr<Vertex_oriented_paths<FT>> paths_;
   bool keep_windows_ = true, has_limit_ = false, chosen_ = false, use_vertex_engine_ = false;
-  bool vertex_oriented_allowed_ = true;
+  bool vertex_oriented_allowed_ = true, vertex_oriented_full_field_ = false;
   bool has_zero_area_face_ = false;
   bool has_special_edges_ = false;
   FT limit_ = FT(0), merge_tolerance_ = FT(0);

@@ -1,32 +1,34 @@
 // Copyright (c) 2026 MDCS contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Exact geodesic distances at the vertices by vertex-oriented window propagation (the scheduling of Qin et
-// al., "Fast and exact discrete geodesic computation based on triangle-oriented wavefront propagation",
-// SIGGRAPH 2016), the engine of the distances_only memory mode.
+// Exact geodesic distances by vertex-oriented window propagation (the scheduling of Qin et al., "Fast and exact
+// discrete geodesic computation based on triangle-oriented wavefront propagation", SIGGRAPH 2016): the engine of
+// Exact_geodesic_distances_3 in both memory modes.
 //
-// The window-ordered engine (exact_window_propagation.h) takes every window out of a priority queue and
-// keeps the lower envelope of every edge; this one keeps no envelope and no window queue:
+// The window-ordered engine (exact_window_propagation.h) takes every window out of a priority queue and keeps the
+// lower envelope of every edge; this one keeps no envelope and no window queue:
 //
-// - Windows wait in a list per halfedge: the windows on its edge that will cross the face of the halfedge.
+// - Windows wait in a list per halfedge: the windows on its edge that will cross the face of the halfedge
+//   (vertex_oriented_window_lists.h).
 // - A priority queue holds vertices by their tentative distance. The nearest one is settled; the lists of the
 //   halfedges that touch it become ready, and ready lists are propagated in FIFO order. A list that receives a
 //   window while its edge touches a settled vertex is ready at once; the others wait for their first settled
-//   end point. So the front advances vertex by vertex and windows cross faces in batches.
-// - A list crosses its face as a batch. Each window is trimmed where a vertex of the face (its distance plus a
-//   straight segment) or another window of the batch beats it (every point beyond is then reached better
-//   through that vertex or window). The batch's best path to the opposite vertex C splits the face: a window
-//   part left of it can only be useful on the left edge, a part right of it on the right edge (shortest paths
-//   do not cross). Each part maps to one child window, with the same pseudo-source, on the edge it reaches.
+//   end point. So the front advances vertex by vertex and windows cross faces in batches (vertex_oriented_batch.h).
 // - Saddle and boundary vertices (and sources) are pseudo-sources: when settled, they emit a window over the
 //   opposite edge of every incident face and their distance along every incident edge.
 // - Vertex distances only decrease. A settled pseudo-source whose distance drops later is settled again, so
 //   the order is label-correcting: every value is the length of a real path, every pruning compares with real
 //   path lengths, and the result is the exact distance once the lists are empty, whatever the order.
 //
-// Only vertex distances come out: no field is stored, so there are no point queries or paths (the facade
-// requires full_field for those). A distance limit and stop targets need the window order (a vertex settled
-// here may still improve) and use the window-ordered engine; see Exact_geodesic_engine.h.
+// The full field is not stored (its windows grow as n^1.45: 264 M at 1.66 M vertices, 11 GB). Instead, with
+// set_record_parents(true), every vertex keeps how it got its distance (its Parent: the halfedge frame, the
+// pseudo-source and where the last segment crosses that halfedge); a shortest path to a vertex is then a walk
+// along straight segments from parent to parent (vertex_oriented_paths.h), and a point query runs a second,
+// small propagation from the query point bounded by these distances (set_backward_query()).
+//
+// A distance limit prunes the windows beyond it; stop targets stop the run once every target is below the
+// front: the smallest value of the vertices in the queue and of the windows waiting in lists that are not ready
+// (tracked in a second queue only when there are stop targets).
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_VERTEX_ORIENTED_PROPAGATION_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_VERTEX_ORIENTED_PROPAGATION_H
@@ -36,6 +38,8 @@
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_window.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Quaternary_heap.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_batch.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_window_lists.h>
 
 #include <algorithm>
 #include <array>
@@ -55,8 +59,41 @@ class Vertex_oriented_window_propagation
 public:
   typedef Geodesic_mesh<FT> Mesh;
   typedef typename Mesh::Index Index;
+  typedef Vertex_oriented_window<FT> Window;
+  typedef Vertex_oriented_batch<FT> Batch;
 
-  explicit Vertex_oriented_window_propagation(const Mesh& mesh) : mesh_(mesh)
+  // How a vertex got its distance. The path leaves the vertex in a straight line to the point `at` of halfedge
+  // g's edge (in g's frame; the vertex itself when it is an end of g), then runs straight to the pseudo-source
+  // (sx, sy) of g's frame, which is `root` (a vertex, or the point source -1 - k inside a face). halfedge -1: the
+  // vertex is a source (root is the vertex itself), or it lies on an edge of the pseudo-source root (the path is
+  // that edge).
+  struct Parent
+  {
+    FT sx, sy, at;
+    Index halfedge, root;
+  };
+
+  struct Face_source
+  {
+    Index face;
+    std::array<FT, 3> barycentric;
+    Index id;
+  };
+
+  // For point queries (vertex_oriented_paths.h): this run starts at the query point and looks for the vertex or
+  // source point v that minimises (this run's distance from the query point to v) + (the forward run's distance
+  // of v). Window parts where a lower bound of that sum exceeds the best so far are trimmed.
+  struct Backward_query
+  {
+    const Vertex_oriented_window_propagation* forward = nullptr;
+    FT best;                 // the best sum so far (the answer when the run ends)
+    Index best_vertex = -1;  // the vertex where it was found, or -1
+    Index best_face_source = -1; // or the forward run's point source (its index in face_sources())
+    Index best_halfedge = -1;    // for a point source: the halfedge frame of the window that reached it
+    Window best_window;          // ... and that window
+  };
+
+  explicit Vertex_oriented_window_propagation(const Mesh& mesh) : mesh_(mesh), batch_(mesh)
   {
     unreached_ = FT(std::numeric_limits<double>::max() / 16);
     if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
@@ -68,61 +105,80 @@ public:
     // Pseudo-sources: saddle and boundary vertices, and the vertices of zero-length edges (their windows are
     // single points) and of zero-area faces. (Exact_geodesic_engine does not run this schedule on meshes with
     // zero-area faces, where it missed paths along their line; the handling of such faces here is kept for the fix.)
-    pseudo_source_.assign(nv, 0);
+    vertex_flags_.assign(nv, 0);
     for(std::size_t v = 0; v < nv; ++v)
-      pseudo_source_[v] = is_saddle_or_boundary_vertex(mesh_, v);
+      if(is_saddle_or_boundary_vertex(mesh_, v))
+        vertex_flags_[v] |= PSEUDO_SOURCE;
     // Of those, the ones where no shortest path bends (a flat interior vertex, a boundary vertex with at most a
     // straight angle) only emit "lobes": windows that never beat the others by more than rounding. Merging (see
     // merge_similar_windows) never lets a lobe replace another window, which keeps flat meshes exact.
-    lobe_vertex_.assign(nv, 0);
     const double pi = 3.14159265358979323846;
     for(std::size_t v = 0; v < nv; ++v)
-      lobe_vertex_[v] = pseudo_source_[v] &&
-                        !(to_double_value(mesh_.vertex_angle_sum[v]) > (mesh_.vertex_on_boundary[v] ? 1 : 2) * pi + 1e-9);
+      if((vertex_flags_[v] & PSEUDO_SOURCE) &&
+         !(to_double_value(mesh_.vertex_angle_sum[v]) > (mesh_.vertex_on_boundary[v] ? 1 : 2) * pi + 1e-9))
+        vertex_flags_[v] |= LOBE_VERTEX;
     for(std::size_t h = 0; h < nh; ++h)
-      if(mesh_.he[h].length == FT(0) || !(mesh_.he[h].opposite.y > FT(0))) {
-        pseudo_source_[std::size_t(mesh_.source(Index(h)))] = pseudo_source_[std::size_t(mesh_.target(Index(h)))] = 1;
-        lobe_vertex_[std::size_t(mesh_.source(Index(h)))] = lobe_vertex_[std::size_t(mesh_.target(Index(h)))] = 0;
-      }
+      if(mesh_.he[h].length == FT(0) || !(mesh_.he[h].opposite.y > FT(0)))
+        for(Index v : {mesh_.source(Index(h)), mesh_.target(Index(h))}) {
+          vertex_flags_[std::size_t(v)] |= PSEUDO_SOURCE;
+          vertex_flags_[std::size_t(v)] &= std::uint8_t(~LOBE_VERTEX);
+        }
     clear();
   }
 
+  // Forgets the sources and the results; the options stay.
   void clear()
   {
     const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
-    dist_.assign(nv, unreached_);
-    vertex_source_.assign(nv, -1);
-    stamp_.assign(nv, 0);
-    state_.assign(nv, OUTSIDE);
-    is_source_.assign(nv, 0);
-    settled_once_.assign(nv, 0);
-    head_.assign(nh, -1);
+    vertices_.assign(nv, Vertex_record{unreached_, -1, 0, OUTSIDE, 0});
+    for(std::size_t v = 0; v < nv; ++v)
+      vertices_[v].flags = vertex_flags_[v];
+    if(record_parents_)
+      parents_.assign(nv, Parent{FT(0), FT(0), FT(0), -1, -1});
+    else
+      std::vector<Parent>().swap(parents_);
+    lists_.reset(nh);
     queued_.assign(nh, 0);
-    pool_.clear();
-    next_.clear();
-    free_.clear();
     heap_.clear();
+    pending_.clear();
     fifo_.clear();
+    fifo_head_ = 0;
+    face_sources_.clear();
     live_ = 0;
+    front_ = FT(0);
+    stopped_early_ = false;
+    lists_processed_ = 0;
     stats_ = Geodesic_statistics();
   }
 
-  // The facade's options: this engine serves distances_only runs without a limit or stop targets only.
-  void set_keep_windows(bool keep)
-  {
-    if(keep)
-      throw std::logic_error("CGAL::Polyhedral_geodesics_3: the vertex-oriented engine keeps no field");
-  }
-
-  // Approximation by interval merging (absolute tolerance; 0: exact). See merge_similar_windows().
+  // distances_only runs need no parents (32 bytes per vertex with double).
+  void set_record_parents(bool record) { record_parents_ = record; }
+  bool records_parents() const { return record_parents_; }
+  // Approximation by interval merging (absolute tolerance; 0: exact). See Vertex_oriented_batch.
   void set_merge_tolerance(const FT& tolerance) { merge_tolerance_ = tolerance; }
+  void set_distance_limit(const FT& limit) { limit_ = limit; has_limit_ = true; }
+  void clear_distance_limit() { has_limit_ = false; }
+  void set_stop_targets(const std::vector<Index>& targets) { stop_targets_ = targets; }
+  // A point query run (see Backward_query), or nullptr for an ordinary run.
+  void set_backward_query(Backward_query* query) { query_ = query; }
 
   void add_vertex_source(Index v, Index id)
   {
     if(v < 0 || std::size_t(v) >= mesh_.number_of_vertices)
       throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: source vertex not in the mesh");
-    is_source_[std::size_t(v)] = 1;
-    update_vertex(v, FT(0), id);
+    Vertex_record& r = vertices_[std::size_t(v)];
+    r.flags |= IS_SOURCE;
+    if(FT(0) < r.dist) {
+      r.dist = FT(0);
+      r.source = id;
+      ++stats_.vertex_updates;
+      if(record_parents_)
+        parents_[std::size_t(v)] = Parent{FT(0), FT(0), FT(0), -1, v};
+      if(query_)
+        offer_candidate(v, FT(0));
+      r.state = FRONT;
+      heap_.push(Heap_entry{FT(0), v, ++r.stamp});
+    }
   }
 
   void add_face_source(Index f, const std::array<FT, 3>& b, Index id)
@@ -164,62 +220,105 @@ public:
     std::size_t pops = 0, settled = 0;
     do {
       while(!heap_.empty()) {
+        if(!stop_targets_.empty() && (pops & 15) == 0 && stop_targets_final()) {
+          stopped_early_ = true;
+          break;
+        }
         const Heap_entry top = heap_.pop();
         const std::size_t v = std::size_t(top.vertex);
-        if(top.stamp != stamp_[v] || state_[v] == INSIDE)
+        Vertex_record& r = vertices_[v];
+        if(top.stamp != r.stamp || r.state == INSIDE)
           continue;
-        if(!settled_once_[v]) {
-          settled_once_[v] = 1;
+        if(!(r.flags & SETTLED_ONCE)) {
+          r.flags |= SETTLED_ONCE;
           ++settled;
         }
-        state_[v] = INSIDE;
-        if(pseudo_source_[v] || is_source_[v])
+        r.state = INSIDE;
+        if((r.flags & (PSEUDO_SOURCE | IS_SOURCE)) && expansion_useful(v))
           expand_vertex(top.vertex);
         for(Index k = star_begin_[v]; k < star_begin_[v + 1]; ++k) {
           const Index h = star_[std::size_t(k)];
           make_ready(h);
           make_ready(Mesh::prev(h));
         }
-        while(fifo_head_ < fifo_.size())
-          process_list(fifo_[fifo_head_++]);
-        fifo_.clear();
-        fifo_head_ = 0;
+        drain_ready_lists();
         if((++pops & 0x3FFF) == 0) {
-          const double fraction = dist_.empty() ? 1.0 : double(settled) / double(dist_.size());
+          const double fraction = vertices_.empty() ? 1.0 : double(settled) / double(vertices_.size());
           if(!progress(stage, fraction < 1.0 ? fraction : 1.0))
             throw MDCS::Operation_cancelled(stage);
         }
       }
-    } while(expand_stranded_neighbours());
-    stats_.stored_windows = 0;
-    note_memory();
-    std::vector<Window>().swap(pool_);
-    std::vector<Index>().swap(next_);
-    std::vector<Index>().swap(free_);
-    heap_.release();
+    } while(!stopped_early_ && !query_ && !has_limit_ && expand_stranded_neighbours());
+    finish();
     if(!progress(stage, 1.0))
       throw MDCS::Operation_cancelled(stage);
   }
 
+  // ------------------------------------------------------------------------------------------------
+  // Results
+
   FT vertex_distance(Index v) const
   {
-    return dist_[std::size_t(v)] >= unreached_ ? FT(std::numeric_limits<double>::infinity()) : dist_[std::size_t(v)];
+    const FT& d = vertices_[std::size_t(v)].dist;
+    return d >= unreached_ ? FT(std::numeric_limits<double>::infinity()) : d;
   }
 
-  Index vertex_source(Index v) const { return vertex_source_[std::size_t(v)]; }
+  Index vertex_source(Index v) const { return vertices_[std::size_t(v)].source; }
 
   const Geodesic_statistics& statistics() const { return stats_; }
 
-private:
-  enum State : char { OUTSIDE = 0, FRONT = 1, INSIDE = 2 };
+  // The value of v during and after the run (the `unreached()` sentinel when it has none).
+  const FT& raw_distance(Index v) const { return vertices_[std::size_t(v)].dist; }
+  const FT& unreached() const { return unreached_; }
+  bool is_source_vertex(Index v) const { return (vertices_[std::size_t(v)].flags & IS_SOURCE) != 0; }
+  const Parent& parent(Index v) const { return parents_[std::size_t(v)]; }
+  const std::vector<Face_source>& face_sources() const { return face_sources_; }
+  const Mesh& mesh() const { return mesh_; }
+  const FT& relative_tolerance() const { return relative_tolerance_; }
 
-  // A window waiting on halfedge g: the interval [b0, b1] of g's edge and the pseudo-source in g's frame
-  // (source(g) at the origin, target(g) at (L, 0), g's face on the side y >= 0, the pseudo-source below).
-  struct Window
+  // The source a window's points come from (its root's).
+  Index source_of_root(Index root) const
   {
-    FT b0, b1, sx, sy, sigma;
+    return root >= 0 ? vertices_[std::size_t(root)].source : face_sources_[std::size_t(-1 - root)].id;
+  }
+
+  // Values up to this bound are final (and reported); the others are +infinity. +infinity after a full run.
+  FT final_bound() const
+  {
+    if(stopped_early_)
+      return has_limit_ && limit_ < front_ ? limit_ : front_;
+    if(has_limit_)
+      return limit_;
+    return FT(std::numeric_limits<double>::infinity());
+  }
+
+  bool stopped_early() const { return stopped_early_; }
+
+  // A lower bound of the exact distance of v: its value when final, else the bound above which it lies.
+  FT distance_lower_bound(Index v) const
+  {
+    const FT& d = vertices_[std::size_t(v)].dist;
+    if(stopped_early_ || has_limit_) {
+      const FT bound = final_bound();
+      return d < bound ? d : bound;
+    }
+    return d;
+  }
+
+  std::size_t lists_processed() const { return lists_processed_; }
+
+private:
+  enum State : std::uint8_t { OUTSIDE = 0, FRONT = 1, INSIDE = 2 };
+  enum Flag : std::uint8_t { PSEUDO_SOURCE = 1, LOBE_VERTEX = 2, IS_SOURCE = 4, SETTLED_ONCE = 8 };
+
+  // What the propagation keeps per vertex, in one record: a batch reads and writes its three vertices, one cache
+  // line each.
+  struct Vertex_record
+  {
+    FT dist;
     Index source;
-    bool lobe; // emitted by a vertex where no shortest path bends (see lobe_vertex_), or a descendant of one
+    std::uint32_t stamp;
+    std::uint8_t state, flags;
   };
 
   struct Heap_entry
@@ -229,26 +328,62 @@ private:
     std::uint32_t stamp;
   };
 
+  struct Pending_entry // a window waiting in a list that is not ready: its smallest value (stop targets only)
+  {
+    FT key;
+    Index halfedge;
+    std::uint32_t unused;
+  };
+
+  typename Batch::Settings settings() const
+  {
+    return typename Batch::Settings{unreached_, relative_tolerance_, merge_tolerance_, limit_, has_limit_};
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // The sequential sink of a batch (see vertex_oriented_batch.h): everything acts at once.
+
+  friend class Sequential_sink;
+  struct Sequential_sink
+  {
+    Vertex_oriented_window_propagation& e;
+    const FT& distance(Index v) const { return e.vertices_[std::size_t(v)].dist; }
+    void lower(Index v, const FT& d, const Window& w, Index g, const FT& at) { e.lower_vertex(v, d, w, g, at); }
+    void child(Index t, const Window& w) { e.add_window(t, w); }
+    void propagated(std::size_t n) { e.stats_.windows_propagated += n; }
+    void pruned() { ++e.stats_.windows_pruned; }
+    void merged() { ++e.stats_.windows_merged; }
+    bool has_bound() const { return e.query_ != nullptr; }
+    bool bound_trim(Index g, Window& w, const FT& L) const { return e.trim_by_query_bound(g, w, L); }
+    void face_sources_in(Index g, const Window* begin, const Window* end) { e.query_face_sources(g, begin, end); }
+  };
+
   // ------------------------------------------------------------------------------------------------
   // Vertices
 
-  void update_vertex(Index v, const FT& d, Index source)
+  // Lowers v to d if that is lower; returns whether it did. A settled vertex stays settled unless it is a
+  // pseudo-source (then it emits its windows again with the lower value).
+  bool update_vertex(Index v, const FT& d, Index source)
   {
-    const std::size_t i = std::size_t(v);
-    if(!(d < dist_[i]))
-      return;
-    dist_[i] = d;
-    vertex_source_[i] = source;
+    Vertex_record& r = vertices_[std::size_t(v)];
+    if(!(d < r.dist))
+      return false;
+    r.dist = d;
+    r.source = source;
     ++stats_.vertex_updates;
-    if(state_[i] == INSIDE) {
-      // Settled already: only a pseudo-source has to act on the lower value (emit its windows again).
-      if(!(pseudo_source_[i] || is_source_[i]))
-        return;
-      state_[i] = FRONT;
-    } else {
-      state_[i] = FRONT;
-    }
-    heap_.push(Heap_entry{d, v, ++stamp_[i]});
+    if(query_)
+      offer_candidate(v, d);
+    if(r.state == INSIDE && !(r.flags & (PSEUDO_SOURCE | IS_SOURCE)))
+      return true;
+    r.state = FRONT;
+    heap_.push(Heap_entry{d, v, ++r.stamp});
+    return true;
+  }
+
+  void lower_vertex(Index v, const FT& d, const Window& w, Index g, const FT& at)
+  {
+    if(update_vertex(v, d, source_of_root(w.root)) && record_parents_)
+      parents_[std::size_t(v)] = Parent{w.sx, w.sy, at, g, w.root};
   }
 
   // A safety net for merging (and for any rounding accident): a vertex left unreached next to a reached one.
@@ -259,8 +394,19 @@ private:
   // goes on. Returns false if there was nothing to do (an exact run on a connected mesh: one scan).
   bool expand_stranded_neighbours()
   {
-    const bool any = expand_reached_neighbours_of_unreached(mesh_, star_begin_, star_, dist_, unreached_,
-                                                            [this](Index w) { expand_vertex(w); });
+    bool any = false;
+    for(std::size_t u = 0; u < vertices_.size(); ++u) {
+      if(vertices_[u].dist < unreached_)
+        continue;
+      for(Index k = star_begin_[u]; k < star_begin_[u + 1]; ++k) {
+        const Index h = star_[std::size_t(k)]; // source(h) == u
+        for(Index w : {mesh_.target(h), mesh_.source(Mesh::prev(h))})
+          if(vertices_[std::size_t(w)].dist < unreached_) {
+            expand_vertex(w);
+            any = true;
+          }
+      }
+    }
     if(any)
       ++stats_.stranded_expansions;
     return any;
@@ -270,25 +416,52 @@ private:
   // window over the opposite edge of every incident face, crossing into the face beyond.
   void expand_vertex(Index v)
   {
-    const FT d = dist_[std::size_t(v)];
-    const Index id = vertex_source_[std::size_t(v)];
+    const Vertex_record r = vertices_[std::size_t(v)];
+    const FT d = r.dist;
+    const std::int32_t lobe = (r.flags & LOBE_VERTEX) && !(r.flags & IS_SOURCE) ? 1 : 0;
     for(Index k = star_begin_[std::size_t(v)]; k < star_begin_[std::size_t(v) + 1]; ++k) {
       const Index h = star_[std::size_t(k)]; // source(h) == v
-      update_vertex(mesh_.target(h), d + mesh_.he[std::size_t(h)].length, id);
+      lower_along_edge(mesh_.target(h), d + mesh_.he[std::size_t(h)].length, r.source, v);
       const Index hp = Mesh::prev(h);
-      update_vertex(mesh_.source(hp), d + mesh_.he[std::size_t(hp)].length, id);
+      lower_along_edge(mesh_.source(hp), d + mesh_.he[std::size_t(hp)].length, r.source, v);
       const Index g = Mesh::next(h);         // the edge opposite v in the face of h
       const Index t = mesh_.he[std::size_t(g)].twin;
       if(t < 0)
         continue;
       const FT L = mesh_.he[std::size_t(g)].length;
+      if(has_limit_ && d > limit_)
+        continue;
       const Point_2_ft<FT>& p = mesh_.he[std::size_t(g)].opposite; // v in g's frame
-      add_window(t, FT(0), L, L - p.x, -p.y, d, id, lobe_vertex_[std::size_t(v)] && !is_source_[std::size_t(v)]);
+      add_window(t, Window{FT(0), L, L - p.x, -p.y, d, v, lobe});
     }
+  }
+
+  void lower_along_edge(Index u, const FT& d, Index source, Index from)
+  {
+    if(update_vertex(u, d, source) && record_parents_)
+      parents_[std::size_t(u)] = Parent{FT(0), FT(0), FT(0), -1, from};
+  }
+
+  // Whether a settled pseudo-source should emit its windows: always, except beyond the limit or, in a point
+  // query, where no path through it can beat the best one found.
+  bool expansion_useful(std::size_t v) const
+  {
+    const FT& d = vertices_[v].dist;
+    if(has_limit_ && d > limit_)
+      return false;
+    if(query_) {
+      const FT lb = query_->forward->distance_lower_bound(Index(v));
+      if(d + lb > query_->best + relative_tolerance_ * query_->best)
+        return false;
+    }
+    return true;
   }
 
   void add_point_source_in_face(Index f, const std::array<FT, 3>& b, Index id)
   {
+    const Index k_source = Index(face_sources_.size());
+    face_sources_.push_back(Face_source{f, b, id});
+    const Index root = -1 - k_source;
     for(int k = 0; k < 3; ++k) {
       const Index g = 3 * f + k;
       const FT L = mesh_.he[std::size_t(g)].length;
@@ -296,430 +469,220 @@ private:
       // the point in g's frame: corners source(g) = k at (0,0), target(g) = k+1 at (L,0), k+2 at c
       const FT px = b[std::size_t((k + 1) % 3)] * L + b[std::size_t((k + 2) % 3)] * c.x;
       const FT py = b[std::size_t((k + 2) % 3)] * c.y;
-      update_vertex(mesh_.source(g), distance_2(FT(0), FT(0), px, py), id);
+      // the corner source(g), straight from the point inside the face (the pseudo-source is above the edge: the
+      // path tracing recognises a point of g's own face)
+      const Window straight{FT(0), FT(0), px, py, FT(0), root, 0};
+      lower_vertex(mesh_.source(g), distance_2(FT(0), FT(0), px, py), straight, g, FT(0));
       if(b[std::size_t((k + 2) % 3)] == FT(0))
         continue; // on this edge: its other side is a face source of its own (see add_face_source)
       const Index t = mesh_.he[std::size_t(g)].twin;
       if(t >= 0)
-        add_window(t, FT(0), L, L - px, -py, FT(0), id, false);
+        add_window(t, Window{FT(0), L, L - px, -py, FT(0), root, 0});
     }
   }
 
   // ------------------------------------------------------------------------------------------------
   // Window lists
 
-  void add_window(Index g, const FT& b0, const FT& b1, const FT& sx, const FT& sy, const FT& sigma, Index source,
-                  bool lobe)
+  void add_window(Index g, const Window& w)
   {
-    Index wi;
-    if(!free_.empty()) {
-      wi = free_.back();
-      free_.pop_back();
-    } else {
-      wi = Index(pool_.size());
-      pool_.emplace_back();
-      next_.push_back(-1);
-    }
-    Window& w = pool_[std::size_t(wi)];
-    w.b0 = b0;
-    w.b1 = b1;
-    w.sx = sx;
-    w.sy = sy;
-    w.sigma = sigma;
-    w.source = source;
-    w.lobe = lobe;
-    next_[std::size_t(wi)] = head_[std::size_t(g)];
-    head_[std::size_t(g)] = wi;
+    lists_.push(g, w);
     ++stats_.windows_created;
     if(++live_ > stats_.peak_live_windows)
       stats_.peak_live_windows = live_;
-    if(!queued_[std::size_t(g)] &&
-       (state_[std::size_t(mesh_.source(g))] == INSIDE || state_[std::size_t(mesh_.target(g))] == INSIDE)) {
-      queued_[std::size_t(g)] = 1;
-      fifo_.push_back(g);
+    if(!queued_[std::size_t(g)]) {
+      if(vertices_[std::size_t(mesh_.source(g))].state == INSIDE || vertices_[std::size_t(mesh_.target(g))].state == INSIDE) {
+        queued_[std::size_t(g)] = 1;
+        fifo_.push_back(g);
+      } else if(!stop_targets_.empty()) {
+        pending_.push(Pending_entry{window_min_distance(w.b0, w.b1, w.sx, w.sy, w.sigma), g, 0});
+      }
     }
-  }
-
-  void free_window(Index wi)
-  {
-    free_.push_back(wi);
-    --live_;
   }
 
   void make_ready(Index g)
   {
-    if(head_[std::size_t(g)] >= 0 && !queued_[std::size_t(g)]) {
+    if(!lists_.empty(g) && !queued_[std::size_t(g)]) {
       queued_[std::size_t(g)] = 1;
       fifo_.push_back(g);
     }
   }
 
-  bool dominated(const FT& via, const FT& d) const { return via + relative_tolerance_ * d < d; }
-
-  static FT value_at(const Window& w, const FT& x) { return window_distance_at(x, w.sx, w.sy, w.sigma); }
-
-  // Removes the end parts of w beaten by the vertices of the face: A = (0, 0), B = (L, 0) and C, each with
-  // its distance plus a straight segment. The beaten set of one vertex is an interval: only a prefix or a
-  // suffix is cut. d0 and d1 are the window's values at its ends (kept current). False if nothing remains.
-  bool trim_by_vertices(Window& w, const FT& L, const Point_2_ft<FT>& c, const FT& da, const FT& db, const FT& dc) const
+  // Propagates the ready lists in FIFO order (including those that become ready meanwhile). The windows of the
+  // list after next are prefetched: their loads then overlap with the work on the current list.
+  void drain_ready_lists()
   {
-    FT d0 = value_at(w, w.b0), d1 = value_at(w, w.b1);
-    if(da < unreached_ && !trim_by_vertex(w, FT(0), FT(0), da, da + w.b0, da + w.b1, d0, d1))
-      return false;
-    if(db < unreached_ && !trim_by_vertex(w, L, FT(0), db, db + (L - w.b0), db + (L - w.b1), d0, d1))
-      return false;
-    // C is at least its height c.y from every point of the edge: when that does not beat either end, the
-    // exact test (two square roots) cannot either
-    if(dc < unreached_ && (dominated(dc + c.y, d0) || dominated(dc + c.y, d1)) &&
-       !trim_by_vertex(w, c.x, c.y, dc, dc + distance_2(c.x, c.y, w.b0, FT(0)), dc + distance_2(c.x, c.y, w.b1, FT(0)), d0, d1))
-      return false;
+    const typename Batch::Settings s = settings();
+    Sequential_sink sink{*this};
+    while(fifo_head_ < fifo_.size()) {
+      if(fifo_head_ + 2 < fifo_.size())
+        lists_.prefetch(fifo_[fifo_head_ + 2]);
+      const Index g = fifo_[fifo_head_++];
+      queued_[std::size_t(g)] = 0;
+      std::vector<Window>& batch = batch_.windows();
+      lists_.take(g, batch);
+      live_ -= batch.size();
+      ++lists_processed_;
+      batch_.run(g, s, sink);
+    }
+    fifo_.clear();
+    fifo_head_ = 0;
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Stop targets
+
+  // Whether every stop target is final: at most the front, the smallest value still to come (the queue's top
+  // and the smallest window waiting in a list that is not ready; the ready lists are empty here).
+  bool stop_targets_final()
+  {
+    while(!pending_.empty() && lists_.empty(pending_.top().halfedge))
+      pending_.pop(); // that list was processed (an entry of a list refilled since is stale but smaller: safe)
+    FT front = heap_.empty() ? unreached_ : heap_.top().key;
+    if(!pending_.empty() && pending_.top().key < front)
+      front = pending_.top().key;
+    for(Index v : stop_targets_)
+      if(!(vertices_[std::size_t(v)].dist <= front))
+        return false;
+    front_ = front;
     return true;
   }
 
-  // One vertex (qx, qy) with distance dq; via0 / via1 are its values at the window's ends.
-  bool trim_by_vertex(Window& w, const FT& qx, const FT& qy, const FT& dq, const FT& via0, const FT& via1,
-                      FT& d0, FT& d1) const
+  void finish()
   {
-    const bool beaten0 = dominated(via0, d0), beaten1 = dominated(via1, d1);
-    if(!beaten0 && !beaten1)
-      return true;
-    FT roots[2];
-    const int n = window_crossings(w.sx, w.sy, w.sigma, qx, qy, dq, w.b0, w.b1, roots);
-    if(beaten0 && beaten1)
-      return n >= 2; // beaten everywhere, unless only the middle survives (then keep it whole)
-    if(n == 0)
-      return true;   // rounding: the ends disagree but no crossing was found
-    if(beaten0) {
-      w.b0 = roots[0];
-      d0 = value_at(w, w.b0);
-    } else {
-      w.b1 = roots[n - 1];
-      d1 = value_at(w, w.b1);
-    }
-    return w.b0 < w.b1;
-  }
-
-  // Removes from a and b the end parts where the other one is lower (on their overlap). The beaten part of
-  // a window at one of its ends runs to the first crossing of the two functions (or to the end of the
-  // overlap). Sets keep_a / keep_b to false when nothing of that window remains.
-  void trim_pair(Window& a, Window& b, bool& keep_a, bool& keep_b) const
-  {
-    keep_a = keep_b = true;
-    const FT lo = a.b0 > b.b0 ? a.b0 : b.b0;
-    const FT hi = a.b1 < b.b1 ? a.b1 : b.b1;
-    if(!(lo < hi))
-      return;
-    const FT a_lo = value_at(a, lo), b_lo = value_at(b, lo), a_hi = value_at(a, hi), b_hi = value_at(b, hi);
-    const bool a0 = !(a.b0 < b.b0) && dominated(b_lo, a_lo), a1 = !(a.b1 > b.b1) && dominated(b_hi, a_hi);
-    const bool b0 = !(b.b0 < a.b0) && dominated(a_lo, b_lo), b1 = !(b.b1 > a.b1) && dominated(a_hi, b_hi);
-    if(!(a0 || a1 || b0 || b1))
-      return;
-    FT roots[2];
-    const int n = window_crossings(a.sx, a.sy, a.sigma, b.sx, b.sy, b.sigma, lo, hi, roots);
-    keep_a = cut_beaten_ends(a, a0, a1, n, roots, lo, hi);
-    keep_b = cut_beaten_ends(b, b0, b1, n, roots, lo, hi);
-  }
-
-  // w is beaten at its start (beaten0) and/or at its end (beaten1), inside the overlap [lo, hi]; the two
-  // functions cross at roots[0..n).
-  static bool cut_beaten_ends(Window& w, bool beaten0, bool beaten1, int n, const FT roots[2], const FT& lo, const FT& hi)
-  {
-    if(beaten0 && beaten1)
-      return n >= 2; // beaten everywhere, unless only the middle survives (then keep it whole)
-    if(beaten0) {
-      if(n > 0) w.b0 = roots[0];
-      else if(hi < w.b1) w.b0 = hi;
-      else return true; // rounding: the ends disagree but no crossing was found
-    } else if(beaten1) {
-      if(n > 0) w.b1 = roots[n - 1];
-      else if(lo > w.b0) w.b1 = lo;
-      else return true;
-    }
-    return w.b0 < w.b1;
-  }
-
-  bool same_function(const Window& a, const Window& b) const
-  {
-    using std::abs;
-    const FT scale = abs(a.sx) + abs(a.sy) + a.sigma + (a.b1 - a.b0);
-    const FT tol = FT(16) * relative_tolerance_ * scale;
-    return abs(a.sx - b.sx) <= tol && abs(a.sy - b.sy) <= tol && abs(a.sigma - b.sigma) <= tol;
-  }
-
-  // The windows of list g cross the face of g.
-  void process_list(Index g)
-  {
-    queued_[std::size_t(g)] = 0;
-    batch_.clear();
-    // the links live apart from the windows: walking them stays in cache, and the windows' own loads
-    // (known indices) can then overlap
-    for(Index wi = head_[std::size_t(g)]; wi >= 0; wi = next_[std::size_t(wi)])
-      batch_.push_back(wi);
-    head_[std::size_t(g)] = -1;
-
-    const FT L = mesh_.he[std::size_t(g)].length;
-    const Index va = mesh_.source(g), vb = mesh_.target(g), vc = mesh_.opposite_vertex(g);
-    if(L == FT(0)) {
-      // A zero-length edge is one point, an end point of both ends: the pseudo-source expansion of those
-      // (see the constructor) carries every path through it.
-      for(Index wi : batch_) {
-        const Window& w = pool_[std::size_t(wi)];
-        const FT d = value_at(w, FT(0));
-        update_vertex(va, d, w.source);
-        update_vertex(vb, d, w.source);
-        free_window(wi);
-      }
-      return;
-    }
-    const Point_2_ft<FT> c = mesh_.he[std::size_t(g)].opposite;
-    const FT tiny = relative_tolerance_ * L;
-
-    // 1. The ends on the vertices, and the trimming by the three vertices of the face.
-    std::size_t kept = 0;
-    for(Index wi : batch_) {
-      Window& w = pool_[std::size_t(wi)];
-      if(w.b0 <= FT(0)) { w.b0 = FT(0); update_vertex(va, value_at(w, FT(0)), w.source); }
-      if(w.b1 >= L) { w.b1 = L; update_vertex(vb, value_at(w, L), w.source); }
-      if(trim_by_vertices(w, L, c, dist_[std::size_t(va)], dist_[std::size_t(vb)], dist_[std::size_t(vc)]) &&
-         w.b1 - w.b0 > tiny) {
-        batch_[kept++] = wi;
-      } else {
-        ++stats_.windows_pruned;
-        free_window(wi);
-      }
-    }
-    batch_.resize(kept);
-    if(batch_.empty())
-      return;
-
-    // 2. The windows of the batch against each other: joins of one distance function, then trimming.
-    if(batch_.size() > 1) {
-      std::sort(batch_.begin(), batch_.end(),
-                [&](Index a, Index b) { return pool_[std::size_t(a)].b0 < pool_[std::size_t(b)].b0; });
-      for(std::size_t i = 0; i < batch_.size(); ++i) {
-        if(batch_[i] < 0)
-          continue;
-        for(std::size_t j = i + 1; j < batch_.size(); ++j) {
-          if(batch_[j] < 0)
-            continue;
-          Window& a = pool_[std::size_t(batch_[i])];
-          Window& b = pool_[std::size_t(batch_[j])];
-          if(b.b0 > a.b1)
-            break; // sorted by b0: no later window overlaps a (up to the trims made so far)
-          if(same_function(a, b)) {
-            if(b.b0 < a.b0) a.b0 = b.b0;
-            if(b.b1 > a.b1) a.b1 = b.b1;
-            free_window(batch_[j]);
-            batch_[j] = -1;
-            continue;
-          }
-          bool keep_a, keep_b;
-          trim_pair(a, b, keep_a, keep_b);
-          keep_a = keep_a && a.b1 - a.b0 > tiny;
-          keep_b = keep_b && b.b1 - b.b0 > tiny;
-          if(!keep_b) {
-            ++stats_.windows_pruned;
-            free_window(batch_[j]);
-            batch_[j] = -1;
-          }
-          if(!keep_a) {
-            ++stats_.windows_pruned;
-            free_window(batch_[i]);
-            batch_[i] = -1;
-            break;
-          }
-        }
-      }
-      kept = 0;
-      for(Index wi : batch_)
-        if(wi >= 0)
-          batch_[kept++] = wi;
-      batch_.resize(kept);
-      if(merge_tolerance_ > FT(0))
-        merge_similar_windows();
-    }
-
-    // 3. The value at C from each window (straight if the segment S-C crosses the window, else through the
-    //    nearer end point) and the batch's best path to C, which splits the face.
-    FT best = unreached_, split = FT(0);
-    Index best_source = -1;
-    crossing_.resize(batch_.size());
-    for(std::size_t i = 0; i < batch_.size(); ++i) {
-      const Window& w = pool_[std::size_t(batch_[i])];
-      const FT denom = c.y - w.sy;
-      // where the line from S to C crosses the edge's line; S on that line (a degenerate face): at S
-      const FT xc = denom > FT(0) ? w.sx + (c.x - w.sx) * (-w.sy) / denom : w.sx;
-      crossing_[i] = xc;
-      FT dc, at;
-      if(xc < w.b0) { dc = value_at(w, w.b0) + distance_2(w.b0, FT(0), c.x, c.y); at = w.b0; }
-      else if(xc > w.b1) { dc = value_at(w, w.b1) + distance_2(w.b1, FT(0), c.x, c.y); at = w.b1; }
-      else { dc = w.sigma + distance_2(w.sx, w.sy, c.x, c.y); at = xc; }
-      if(dc < best) {
-        best = dc;
-        split = at;
-        best_source = w.source;
-      }
-    }
-    update_vertex(vc, best, best_source);
-
-    // 4. Children: rays through [b0, min(xc, split)] reach the edge A-C, rays through [max(xc, split), b1]
-    //    the edge B-C (only the parts on the side of the split that the rays reach are useful).
-    const Index h_ca = Mesh::prev(g), h_bc = Mesh::next(g);
-    const Index t_ac = mesh_.he[std::size_t(h_ca)].twin, t_bc = mesh_.he[std::size_t(h_bc)].twin;
-    const FT len_ac = mesh_.he[std::size_t(h_ca)].length, len_bc = mesh_.he[std::size_t(h_bc)].length;
-    // the frames of the targets: t_ac has A at the origin and C at (len_ac, 0); t_bc has C at the origin and
-    // B at (len_bc, 0); the face of g is below both
-    const bool to_ac = t_ac >= 0 && len_ac > FT(0), to_bc = t_bc >= 0 && len_bc > FT(0);
-    const FT ac_x = to_ac ? c.x / len_ac : FT(0), ac_y = to_ac ? c.y / len_ac : FT(0);
-    const FT bc_x = to_bc ? (L - c.x) / len_bc : FT(0), bc_y = to_bc ? -c.y / len_bc : FT(0);
-    for(std::size_t i = 0; i < batch_.size(); ++i) {
-      const Index wi = batch_[i];
-      const Window w = pool_[std::size_t(wi)];
-      free_window(wi);
-      ++stats_.windows_propagated;
-      const FT xc = crossing_[i];
-      if(!(w.sy < FT(0)) && !(w.sx < w.b0) && !(w.sx > w.b1)) {
-        // The pseudo-source is a point of the window itself (a source seen through a zero-area face): it
-        // sees the whole face, and both other edges entirely.
-        if(to_ac)
-          emit_whole_edge(t_ac, len_ac, w, ac_x, ac_y, FT(0), FT(0));
-        if(to_bc)
-          emit_whole_edge(t_bc, len_bc, w, bc_x, bc_y, c.x, c.y);
-        continue;
-      }
-      if(to_ac) {
-        FT x1 = w.b1;
-        if(xc < x1) x1 = xc;
-        if(split < x1) x1 = split;
-        if(x1 - w.b0 > tiny)
-          emit_child(t_ac, len_ac, w, w.b0, x1, ac_x, ac_y, FT(0), FT(0));
-      }
-      if(to_bc) {
-        FT x0 = w.b0;
-        if(xc > x0) x0 = xc;
-        if(split > x0) x0 = split;
-        if(w.b1 - x0 > tiny)
-          emit_child(t_bc, len_bc, w, x0, w.b1, bc_x, bc_y, c.x, c.y);
-      }
-    }
-  }
-
-  // Interval merging (thesis 4.2), for Merged_window_geodesic_distances_3: a window of the batch (sorted by
-  // start) absorbs the next one when their intervals touch or overlap and one of the two distance functions,
-  // extended over the other's interval, lies between that function and that function plus the tolerance; of
-  // two candidates the one that deviates less is kept. A kept function is never below the one it replaces, and
-  // every window's values stay at or above the exact distance (the children add straight segments), so every
-  // distance stays at or above the exact one. Gaps are never bridged: no bound would hold there.
-  void merge_similar_windows()
-  {
-    // the trimming moved starts: sort again, so that neighbours along the edge are neighbours in the batch
-    std::sort(batch_.begin(), batch_.end(),
-              [&](Index a, Index b) { return pool_[std::size_t(a)].b0 < pool_[std::size_t(b)].b0; });
-    std::size_t kept = 0;
-    for(std::size_t i = 0; i < batch_.size(); ++i) {
-      const Index wi = batch_[i];
-      if(kept > 0) {
-        Window& a = pool_[std::size_t(batch_[kept - 1])];
-        const Window& b = pool_[std::size_t(wi)];
-        if(!(b.b0 > a.b1) && !(a.b0 > b.b1)) { // they touch or overlap (a gap is never bridged)
-          // a lobe never replaces another window's function
-          const FT a_over_b = a.lobe && !b.lobe ? FT(-1)
-                              : window_merge_deviation(a.sx, a.sy, a.sigma, b.sx, b.sy, b.sigma, b.b0, b.b1,
-                                                       merge_tolerance_, relative_tolerance_);
-          const FT b_over_a = b.lobe && !a.lobe ? FT(-1)
-                              : window_merge_deviation(b.sx, b.sy, b.sigma, a.sx, a.sy, a.sigma, a.b0, a.b1,
-                                                       merge_tolerance_, relative_tolerance_);
-          if(a_over_b >= FT(0) || b_over_a >= FT(0)) {
-            const bool keep_a = !(b_over_a >= FT(0)) || (a_over_b >= FT(0) && !(b_over_a < a_over_b));
-            if(!keep_a) {
-              a.sx = b.sx;
-              a.sy = b.sy;
-              a.sigma = b.sigma;
-              a.source = b.source;
-              a.lobe = b.lobe;
-            }
-            if(b.b0 < a.b0) a.b0 = b.b0;
-            if(b.b1 > a.b1) a.b1 = b.b1;
-            free_window(wi);
-            ++stats_.windows_merged;
-            continue;
-          }
-        }
-      }
-      batch_[kept++] = wi;
-    }
-    batch_.resize(kept);
-  }
-
-  // The rays from the pseudo-source of w through [x0, x1] (on g's edge) cross into the target halfedge t,
-  // whose frame has its origin at (ox, oy) of g's frame and its x axis along the unit vector (ex, ey).
-  void emit_child(Index t, const FT& len, const Window& w, const FT& x0, const FT& x1, const FT& ex, const FT& ey,
-                  const FT& ox, const FT& oy)
-  {
-    // a point (px, py) of g's frame in t's frame: x' = e . (p - o), y' = e x (p - o)
-    const FT dx = w.sx - ox, dy = w.sy - oy;
-    const FT sx = ex * dx + ey * dy, sy = ex * dy - ey * dx;
-    if(!(sy < FT(0)))
-      return; // the pseudo-source is not behind the target edge (a degenerate face): no ray crosses it
-    auto hit = [&](const FT& x, bool& ok) -> FT {
-      const FT qx = ex * (x - ox) - ey * oy, qy = -ex * oy - ey * (x - ox);
-      const FT den = qy - sy;
-      if(!(den > FT(0))) {
-        ok = false;
-        return FT(0);
-      }
-      return sx + (qx - sx) * (-sy) / den;
-    };
-    bool ok0 = true, ok1 = true;
-    FT h0 = hit(x0, ok0), h1 = hit(x1, ok1);
-    if(!ok0 || !ok1)
-      return;
-    if(h1 < h0)
-      std::swap(h0, h1);
-    if(h0 < FT(0)) h0 = FT(0);
-    if(h1 > len) h1 = len;
-    if(!(h1 - h0 > relative_tolerance_ * len))
-      return;
-    add_window(t, h0, h1, sx, sy, w.sigma, w.source, w.lobe);
-  }
-
-  void emit_whole_edge(Index t, const FT& len, const Window& w, const FT& ex, const FT& ey, const FT& ox, const FT& oy)
-  {
-    const FT dx = w.sx - ox, dy = w.sy - oy;
-    const FT sx = ex * dx + ey * dy, sy = ex * dy - ey * dx;
-    if(sy < FT(0))
-      add_window(t, FT(0), len, sx, sy, w.sigma, w.source, w.lobe);
-  }
-
-  void note_memory()
-  {
-    const std::size_t bytes = pool_.capacity() * (sizeof(Window) + sizeof(Index)) + heap_.capacity() * sizeof(Heap_entry) +
-                              head_.capacity() * sizeof(Index) + queued_.capacity() + fifo_.capacity() * sizeof(Index);
+    stats_.stopped_early = stopped_early_;
+    stats_.stored_windows = 0;
+    const std::size_t bytes = lists_.memory_bytes() + heap_.capacity() * sizeof(Heap_entry) +
+                              queued_.capacity() + fifo_.capacity() * sizeof(Index) +
+                              vertices_.capacity() * sizeof(Vertex_record) + parents_.capacity() * sizeof(Parent);
     if(bytes > stats_.peak_memory_bytes)
       stats_.peak_memory_bytes = bytes;
+    lists_.release();
+    std::vector<char>().swap(queued_);
+    heap_.release();
+    pending_.release();
+    std::vector<Index>().swap(fifo_);
+    if(stopped_early_ || has_limit_) {
+      // Only values up to the front (or the limit) are final; the others are reported as unreachable, never as a
+      // wrong value (distance_lower_bound() then says that they lie beyond the bound).
+      const FT bound = final_bound();
+      for(Vertex_record& r : vertices_)
+        if(r.dist > bound) {
+          r.dist = unreached_;
+          r.source = -1;
+        }
+    }
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Point queries (see Backward_query)
+
+  void offer_candidate(Index v, const FT& d)
+  {
+    const FT& forward = query_->forward->raw_distance(v);
+    if(!(forward < query_->forward->unreached()))
+      return;
+    const FT sum = d + forward;
+    if(sum < query_->best) {
+      query_->best = sum;
+      query_->best_vertex = v;
+      query_->best_face_source = -1;
+    }
+  }
+
+  // Trims w (on halfedge g, length L) to the part where the lower bound of (this run's value at the point x) +
+  // (the forward distance of x) is at most the best sum found: with LB(x) = max(dA - x, dB - (L - x)) (the
+  // forward distances of the ends, minus the way along the edge), the prefix where dA - x + w(x) > best and the
+  // suffix where dB - (L - x) + w(x) > best go (the first sum decreases with x, the second increases). No path
+  // through a trimmed point beats `best`: the forward distance of any point beyond it is at least its own minus
+  // the way there. False if nothing remains.
+  bool trim_by_query_bound(Index g, Window& w, const FT& L) const
+  {
+    const FT bound = query_->best + relative_tolerance_ * query_->best;
+    const FT da = query_->forward->distance_lower_bound(mesh_.source(g));
+    const FT db = query_->forward->distance_lower_bound(mesh_.target(g));
+    auto fa = [&](const FT& x) { return da - x + Batch::value_at(w, x); };
+    auto fb = [&](const FT& x) { return db - (L - x) + Batch::value_at(w, x); };
+    if(fa(w.b1) > bound || fb(w.b0) > bound)
+      return false;
+    if(fa(w.b0) > bound) {
+      // sqrt((x - sx)^2 + sy^2) = K + x, K = bound - sigma - da: linear after squaring
+      const FT K = bound - w.sigma - da;
+      const FT den = FT(2) * (K + w.sx);
+      if(den != FT(0)) {
+        const FT x = (w.sx * w.sx + w.sy * w.sy - K * K) / den;
+        if(x > w.b0 && x < w.b1)
+          w.b0 = x;
+      }
+    }
+    if(fb(w.b1) > bound) {
+      // sqrt((x - sx)^2 + sy^2) = K - x, K = bound - sigma - db + L
+      const FT K = bound - w.sigma - db + L;
+      const FT den = FT(2) * (K - w.sx);
+      if(den != FT(0)) {
+        const FT x = (K * K - w.sx * w.sx - w.sy * w.sy) / den;
+        if(x > w.b0 && x < w.b1)
+          w.b1 = x;
+      }
+    }
+    return w.b0 < w.b1;
+  }
+
+  // The forward run's point sources in the face of g, reached by the batch's windows: straight through the
+  // window, or through its nearer end.
+  void query_face_sources(Index g, const Window* begin, const Window* end)
+  {
+    const std::vector<Face_source>& sources = query_->forward->face_sources();
+    if(sources.empty())
+      return;
+    const Index f = Mesh::face_of(g);
+    for(std::size_t k = 0; k < sources.size(); ++k) {
+      if(sources[k].face != f)
+        continue;
+      const int corner = int(g % 3);
+      const std::array<FT, 3>& b = sources[k].barycentric;
+      const FT L = mesh_.he[std::size_t(g)].length;
+      const Point_2_ft<FT>& c = mesh_.he[std::size_t(g)].opposite;
+      const FT px = b[std::size_t((corner + 1) % 3)] * L + b[std::size_t((corner + 2) % 3)] * c.x;
+      const FT py = b[std::size_t((corner + 2) % 3)] * c.y;
+      for(const Window* w = begin; w != end; ++w) {
+        const FT den = py - w->sy;
+        FT x = den > FT(0) ? w->sx + (px - w->sx) * (-w->sy) / den : px;
+        if(x < w->b0) x = w->b0;
+        if(x > w->b1) x = w->b1;
+        const FT d = Batch::value_at(*w, x) + distance_2(x, FT(0), px, py);
+        if(d < query_->best) {
+          query_->best = d;
+          query_->best_vertex = -1;
+          query_->best_face_source = Index(k);
+          query_->best_halfedge = g;
+          query_->best_window = *w;
+          query_->best_window.b0 = query_->best_window.b1 = x; // where the path crosses g
+        }
+      }
+    }
   }
 
   const Mesh& mesh_;
   FT unreached_, relative_tolerance_;
   FT merge_tolerance_ = FT(0);
+  FT limit_ = FT(0), front_ = FT(0);
+  bool has_limit_ = false, stopped_early_ = false, record_parents_ = false;
+  std::vector<Index> stop_targets_;
+  Backward_query* query_ = nullptr;
   std::vector<Index> star_begin_, star_;
-  std::vector<char> lobe_vertex_;
-  std::vector<char> pseudo_source_, is_source_, settled_once_;
-  std::vector<FT> dist_;
-  std::vector<Index> vertex_source_;
-  std::vector<std::uint32_t> stamp_;
-  std::vector<char> state_;
-  std::vector<Index> head_;   // per halfedge: its waiting windows (a singly linked list in pool_)
+  std::vector<std::uint8_t> vertex_flags_;  // PSEUDO_SOURCE, LOBE_VERTEX (from the mesh)
+  std::vector<Vertex_record> vertices_;
+  std::vector<Parent> parents_;
+  std::vector<Face_source> face_sources_;
+  Window_chunk_lists<Window> lists_;
   std::vector<char> queued_;  // per halfedge: in the FIFO of ready lists
-  std::vector<Window> pool_;
-  std::vector<Index> next_;   // per pool window: the next window of its list
-  std::vector<Index> free_;
   Quaternary_heap<Heap_entry> heap_;
+  Quaternary_heap<Pending_entry> pending_;
   std::vector<Index> fifo_;
   std::size_t fifo_head_ = 0;
-  std::vector<Index> batch_;
-  std::vector<FT> crossing_;
-  std::size_t live_ = 0;
+  Batch batch_;
+  std::size_t live_ = 0, lists_processed_ = 0;
   Geodesic_statistics stats_;
 };
 
