@@ -119,6 +119,43 @@ TEST_CASE("parallel facet weights: identical for 1, 2, 3 and 8 threads", "[varia
   CHECK(monte_carlo != quadrature);
 }
 
+TEST_CASE("parallel arrangement build: the same arrangement for every thread count", "[variational][surface][parallel]")
+{
+  const VM::Surface_problem_3 P = saddle_problem();
+  const std::vector<VM::Lattice_plane_3> planes = VM::surface_planes_3(P, 72);
+  const VM::Plane_arrangement_3 seq(planes);
+  REQUIRE(seq.number_of_cells() > 20000); // the last insertions create more than 1024 cells: boxes in parallel
+  for(std::size_t t : thread_counts) {
+    INFO(t << " threads");
+    VM::Plane_arrangement_3 par(planes, CGAL::MDCS::No_progress(), t);
+    REQUIRE(par.number_of_cells() == seq.number_of_cells());
+    REQUIRE(par.number_of_facets() == seq.number_of_facets());
+    REQUIRE(par.number_of_vertices() == seq.number_of_vertices());
+    bool same = true;
+    for(std::uint32_t f = 0; f < seq.number_of_facets() && same; ++f)
+      same = seq.facet(f).plane == par.facet(f).plane && seq.facet(f).negative_cell == par.facet(f).negative_cell &&
+             seq.facet(f).positive_cell == par.facet(f).positive_cell && seq.facet_vertices(f) == par.facet_vertices(f);
+    for(std::uint32_t c = 0; c < seq.number_of_cells() && same; ++c)
+      same = std::vector<std::uint32_t>(seq.cell_facets(c).begin(), seq.cell_facets(c).end()) ==
+             std::vector<std::uint32_t>(par.cell_facets(c).begin(), par.cell_facets(c).end());
+    for(std::uint32_t v = 0; v < seq.number_of_vertices() && same; ++v) same = seq.point(v) == par.point(v);
+    CHECK(same);
+    // Later insertions (a tree rebuilt from the cells' boxes) agree too.
+    VM::Plane_arrangement_3 more_seq(planes);
+    const std::vector<VM::Lattice_plane_3> extra = VM::surface_planes_3(P, 68, [] {
+      VM::Surface_plane_options_3 o;
+      o.seed = 99;
+      return o;
+    }());
+    for(std::size_t i = 64; i < extra.size(); ++i) {
+      par.insert_plane(extra[i]);
+      more_seq.insert_plane(extra[i]);
+    }
+    CHECK(par.number_of_cells() == more_seq.number_of_cells());
+    CHECK(par.number_of_cells() > seq.number_of_cells());
+  }
+}
+
 TEST_CASE("parallel facet weights: polygonal domain, errors and progress as in the sequential code",
           "[variational][surface][parallel]")
 {

@@ -96,7 +96,7 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
     Surface_plane_options_3 o = options;
     o.seed = options.seed + 104729 * std::uint64_t(r);
     run_planes[r] = surface_planes_3(problem, n, o);
-    const Arr arrangement(run_planes[r]);
+    const Arr arrangement(run_planes[r], CGAL::MDCS::No_progress(), inner);
     CGAL::MDCS::No_progress none;
     surfaces[r] = internal::minimize_surface_functional_threads_3(arrangement, problem, G, quadrature_level, inner,
                                                                   engine, none);
@@ -175,7 +175,7 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
     }
   }
   reporter(std::size_t(runs));
-  const Arr arrangement(result.planes);
+  const Arr arrangement(result.planes, CGAL::MDCS::No_progress(), threads);
   result.cells = arrangement.number_of_cells();
   // Cells outside the widened envelope, by an interior point (the mean of the vertices: no s_r crosses a cell),
   // are contracted into the source (label 1) or the sink (label 2).

@@ -79,7 +79,8 @@ struct Tangent_refinement_result_3
   optimum.
 
   The fits and the facet weights of every round run on `tangent_options.threads` threads; the planes and the
-  result do not depend on the thread count (building the arrangement and the max-flow stay sequential).
+  result do not depend on the thread count (the cell boxes of the arrangement build too; the rest of the build and
+  the max-flow stay sequential).
   `progress` is called with stage `"tangent refinement"`, once per round.
   \throws std::invalid_argument for an invalid problem or functional, `rounds < 0`, a fit radius not in (0, 1],
           `n` not larger than the planes kept from round 0 plus the boundary pencils, or no feasible surface in
@@ -148,7 +149,7 @@ refine_surface_by_tangent_planes_3(const Surface_problem_3& problem, const Funct
         }
       }
     }
-    const Plane_arrangement_3 arrangement(planes);
+    const Plane_arrangement_3 arrangement(planes, CGAL::MDCS::No_progress(), threads);
     CGAL::MDCS::No_progress none;
     Minimal_surface_3 s = internal::minimize_surface_functional_threads_3(arrangement, problem, G, quadrature_level,
                                                                           threads, engine, none);

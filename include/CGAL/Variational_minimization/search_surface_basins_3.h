@@ -345,7 +345,8 @@ Relaxed_plane_selection_result_3 select_planes_relaxed_3(const Surface_problem_3
     throw std::invalid_argument("MDCS: select_planes_relaxed_3: the relaxation needs a rectangular domain");
   Relaxed_plane_selection_result_3 out;
   out.selection = select_planes_3(problem, G, n, rounds, plane_options, 1, engine, progress);
-  const Plane_arrangement_3 arrangement(out.selection.planes);
+  const Plane_arrangement_3 arrangement(out.selection.planes, CGAL::MDCS::No_progress(),
+                                         CGAL::MDCS::effective_threads(plane_options.threads, true));
   const std::vector<double> w =
     surface_facet_weights_3<CGAL::Parallel_if_available_tag>(arrangement, problem, G, 1,
                                                               (std::max)(CGAL::MDCS::effective_threads(plane_options.threads, true),

@@ -82,7 +82,7 @@ struct Plane_selection_result_3
   zmax - zmin), the rest through the whole box. The optimum of an iteration is therefore available to
   the next one, and the energy cannot increase (up to rounding of quadrature weights; the best is kept anyway).
   The facet weights of each round are computed on `options.threads` threads (identical results for every count;
-  building the arrangement and the max-flow stay sequential).
+  the cell boxes of the arrangement build too; the rest of the build and the max-flow stay sequential).
   `progress` is called with stage `"plane selection"`.
   \throws std::invalid_argument for an invalid problem or functional, or `iterations < 1`.
 */
@@ -109,7 +109,7 @@ Plane_selection_result_3 select_planes_3(const Surface_problem_3& problem, const
   Plane_selection_result_3 result;
   for(int it = 0; it < iterations; ++it) {
     reporter(std::size_t(it));
-    const Plane_arrangement_3 arrangement(planes);
+    const Plane_arrangement_3 arrangement(planes, CGAL::MDCS::No_progress(), threads);
     Minimal_surface_3 s = internal::minimize_surface_functional_threads_3(arrangement, problem, G, quadrature_level,
                                                                           threads, engine, no_progress);
     result.energies.push_back(s.energy);
