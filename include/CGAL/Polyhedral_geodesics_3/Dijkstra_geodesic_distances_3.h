@@ -14,6 +14,9 @@
 
 #include <CGAL/boost/graph/properties.h>
 
+#include <memory>
+#include <utility>
+
 namespace CGAL {
 namespace Polyhedral_geodesics_3 {
 
@@ -53,7 +56,7 @@ namespace Polyhedral_geodesics_3 {
   \tparam VertexPointMap a readable property map from vertices to 3D points of any CGAL kernel.
 */
 template <class TriangleMesh, class FT_ = double,
-          class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
+          class VertexPointMap = typename internal::Default_vertex_point_map<TriangleMesh>::type>
 class Dijkstra_geodesic_distances_3
   : public internal::Geodesic_distances_facade<TriangleMesh, FT_, VertexPointMap,
                                                internal::Dijkstra_edge_propagation<FT_>>
@@ -71,6 +74,18 @@ public:
   Dijkstra_geodesic_distances_3(const TriangleMesh& tm, VertexPointMap vpm,
                                 Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
     : Base(tm, vpm, mode)
+  {}
+
+  /// On a prepared surface (see `Geodesic_surface_3`), shared with other objects: nothing is rebuilt.
+  explicit Dijkstra_geodesic_distances_3(std::shared_ptr<const typename Base::Surface> surface,
+                                         Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(std::move(surface), mode)
+  {}
+
+  /// On a prepared surface that outlives the object.
+  explicit Dijkstra_geodesic_distances_3(const typename Base::Surface& surface,
+                                         Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(surface, mode)
   {}
 };
 

@@ -73,7 +73,7 @@ namespace Polyhedral_geodesics_3 {
   \cgalModels `GeodesicDistances3` (the member functions are documented there and in the package manual).
 */
 template <class TriangleMesh, class FT_ = double,
-          class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
+          class VertexPointMap = typename internal::Default_vertex_point_map<TriangleMesh>::type>
 class Exact_geodesic_distances_3
   : public internal::Geodesic_distances_facade<TriangleMesh, FT_, VertexPointMap,
                                                internal::Exact_geodesic_engine<FT_>>
@@ -91,6 +91,18 @@ public:
   Exact_geodesic_distances_3(const TriangleMesh& tm, VertexPointMap vpm,
                              Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
     : Base(tm, vpm, mode)
+  {}
+
+  /// On a prepared surface (see `Geodesic_surface_3`), shared with other objects: nothing is rebuilt.
+  explicit Exact_geodesic_distances_3(std::shared_ptr<const typename Base::Surface> surface,
+                                      Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(std::move(surface), mode)
+  {}
+
+  /// On a prepared surface that outlives the object.
+  explicit Exact_geodesic_distances_3(const typename Base::Surface& surface,
+                                      Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(surface, mode)
   {}
 
   /// Whether `distances_only` runs without a distance limit or stop targets use the vertex-oriented

@@ -15,6 +15,9 @@
 
 #include <CGAL/boost/graph/properties.h>
 
+#include <memory>
+#include <utility>
+
 namespace CGAL {
 namespace Polyhedral_geodesics_3 {
 
@@ -74,7 +77,7 @@ namespace Polyhedral_geodesics_3 {
   \tparam VertexPointMap a readable property map from vertices to 3D points of any CGAL kernel.
 */
 template <class TriangleMesh, class FT_ = double,
-          class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
+          class VertexPointMap = typename internal::Default_vertex_point_map<TriangleMesh>::type>
 class Fast_marching_geodesic_distances_3
   : public internal::Geodesic_distances_facade<TriangleMesh, FT_, VertexPointMap,
                                                internal::Fast_marching_propagation<FT_>>
@@ -94,6 +97,26 @@ public:
                                      Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
     : Base(tm, vpm, mode)
   {}
+
+  /// On a prepared surface (see `Geodesic_surface_3`), shared with other objects: nothing is rebuilt.
+  explicit Fast_marching_geodesic_distances_3(std::shared_ptr<const typename Base::Surface> surface,
+                                              Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(std::move(surface), mode)
+  {
+    this->require_oriented_manifold_edges("Fast_marching_geodesic_distances_3", "fast marching unfolds obtuse corners across an edge into its twin's face and descends its paths from face "
+        "to face across edges, which needs every edge to have at most two faces that run through it in opposite "
+        "directions");
+  }
+
+  /// On a prepared surface that outlives the object.
+  explicit Fast_marching_geodesic_distances_3(const typename Base::Surface& surface,
+                                              Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(surface, mode)
+  {
+    this->require_oriented_manifold_edges("Fast_marching_geodesic_distances_3", "fast marching unfolds obtuse corners across an edge into its twin's face and descends its paths from face "
+        "to face across edges, which needs every edge to have at most two faces that run through it in opposite "
+        "directions");
+  }
 };
 
 } // namespace Polyhedral_geodesics_3

@@ -15,6 +15,9 @@
 
 #include <CGAL/boost/graph/properties.h>
 
+#include <memory>
+#include <utility>
+
 namespace CGAL {
 namespace Polyhedral_geodesics_3 {
 
@@ -82,7 +85,7 @@ namespace Polyhedral_geodesics_3 {
   or stop targets, vertices whose distance is not final when the propagation stops report `+infinity`.
 */
 template <class TriangleMesh, class FT_ = double,
-          class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
+          class VertexPointMap = typename internal::Default_vertex_point_map<TriangleMesh>::type>
 class Flat_exact_geodesic_distances_3
   : public internal::Geodesic_distances_facade<TriangleMesh, FT_, VertexPointMap,
                                                internal::Flat_exact_propagation<FT_>>
@@ -101,6 +104,26 @@ public:
                                   Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
     : Base(tm, vpm, mode)
   {}
+
+  /// On a prepared surface (see `Geodesic_surface_3`), shared with other objects: nothing is rebuilt.
+  explicit Flat_exact_geodesic_distances_3(std::shared_ptr<const typename Base::Surface> surface,
+                                           Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(std::move(surface), mode)
+  {
+    this->require_oriented_manifold_edges("Flat_exact_geodesic_distances_3", "flat-exact rebuilds the distance function of an edge on its two sides (a pseudo-source and its mirror "
+        "image) and propagates it into the face on each side, which needs every edge to have at most two faces that "
+        "run through it in opposite directions");
+  }
+
+  /// On a prepared surface that outlives the object.
+  explicit Flat_exact_geodesic_distances_3(const typename Base::Surface& surface,
+                                           Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(surface, mode)
+  {
+    this->require_oriented_manifold_edges("Flat_exact_geodesic_distances_3", "flat-exact rebuilds the distance function of an edge on its two sides (a pseudo-source and its mirror "
+        "image) and propagates it into the face on each side, which needs every edge to have at most two faces that "
+        "run through it in opposite directions");
+  }
 };
 
 } // namespace Polyhedral_geodesics_3

@@ -16,7 +16,9 @@
 
 #include <CGAL/boost/graph/properties.h>
 
+#include <memory>
 #include <stdexcept>
+#include <utility>
 
 namespace CGAL {
 namespace Polyhedral_geodesics_3 {
@@ -56,7 +58,7 @@ namespace Polyhedral_geodesics_3 {
   \tparam TriangleMesh, FT_, VertexPointMap as in `Exact_geodesic_distances_3`.
 */
 template <class TriangleMesh, class FT_ = double,
-          class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
+          class VertexPointMap = typename internal::Default_vertex_point_map<TriangleMesh>::type>
 class Merged_window_geodesic_distances_3
   : public internal::Geodesic_distances_facade<TriangleMesh, FT_, VertexPointMap,
                                                internal::Exact_geodesic_engine<FT_>>
@@ -77,6 +79,23 @@ public:
   Merged_window_geodesic_distances_3(const TriangleMesh& tm, VertexPointMap vpm, FT_ merge_tolerance,
                                      Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
     : Base(tm, vpm, mode)
+  {
+    set_merge_tolerance(merge_tolerance);
+  }
+
+  /// On a prepared surface (see `Geodesic_surface_3`), shared with other objects: nothing is rebuilt.
+  explicit Merged_window_geodesic_distances_3(std::shared_ptr<const typename Base::Surface> surface,
+                                              FT_ merge_tolerance = FT_(0),
+                                              Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(std::move(surface), mode)
+  {
+    set_merge_tolerance(merge_tolerance);
+  }
+
+  /// On a prepared surface that outlives the object.
+  explicit Merged_window_geodesic_distances_3(const typename Base::Surface& surface, FT_ merge_tolerance = FT_(0),
+                                              Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
+    : Base(surface, mode)
   {
     set_merge_tolerance(merge_tolerance);
   }

@@ -47,6 +47,10 @@ public:
         has_zero_area_face_ = true;
         break;
       }
+    // The vertex-oriented schedule follows `twin` alone: an edge of three or more faces, or one whose two faces
+    // run through it in the same direction (a non-orientable gluing), would be a border to it. The window
+    // propagation crosses such edges into every other face (geodesic_window.h).
+    has_special_edges_ = mesh_.has_special_edges();
   }
 
   void clear()
@@ -130,7 +134,8 @@ private:
       return;
     chosen_ = true;
     use_vertex_engine_ =
-        vertex_oriented_allowed_ && !has_zero_area_face_ && !keep_windows_ && !has_limit_ && stop_targets_.empty();
+        vertex_oriented_allowed_ && !has_zero_area_face_ && !has_special_edges_ && !keep_windows_ && !has_limit_ &&
+        stop_targets_.empty();
     if(use_vertex_engine_) {
       vertex_engine().clear();
       vertex_engine().set_merge_tolerance(merge_tolerance_);
@@ -165,6 +170,7 @@ private:
   bool keep_windows_ = true, has_limit_ = false, chosen_ = false, use_vertex_engine_ = false;
   bool vertex_oriented_allowed_ = true;
   bool has_zero_area_face_ = false;
+  bool has_special_edges_ = false;
   FT limit_ = FT(0), merge_tolerance_ = FT(0);
   std::vector<Index> stop_targets_;
 };

@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The public interface shared by every geodesic distance class of the package (the concept
-// GeodesicDistances3): sources, options, queries and paths on any FaceGraph, translated to the compact
-// mesh and forwarded to a propagation engine. Each public class (Exact_geodesic_distances_3,
-// Flat_exact_geodesic_distances_3, ...) derives from this facade with its own engine.
+// GeodesicDistances3): sources, options, queries and paths on any FaceGraph or triangle soup, translated to the
+// compact mesh of a prepared surface (Geodesic_surface_3, shared and read-only) and forwarded to a propagation
+// engine. Each public class (Exact_geodesic_distances_3, Flat_exact_geodesic_distances_3, ...) derives from this
+// facade with its own engine.
 //
 // An engine is a class constructible from `const Geodesic_mesh<FT>&` with
 //   void clear();                                   // forget sources and results
@@ -25,6 +26,7 @@
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_DISTANCES_FACADE_H
 
 #include <CGAL/MDCS/progress.h>
+#include <CGAL/Polyhedral_geodesics_3/Geodesic_surface_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
@@ -50,16 +52,17 @@ namespace internal {
 template <class TriangleMesh, class FT_, class VertexPointMap, class Engine_>
 class Geodesic_distances_facade
 {
-  typedef boost::graph_traits<TriangleMesh> GT;
-
 public:
   typedef FT_ FT;
-  typedef typename GT::vertex_descriptor vertex_descriptor;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
-  typedef typename GT::face_descriptor face_descriptor;
-  typedef typename boost::property_traits<VertexPointMap>::value_type Point_3;
+  /// The prepared surface the object runs on.
+  typedef Geodesic_surface_3<TriangleMesh, FT_, VertexPointMap> Surface;
+  typedef typename Surface::vertex_descriptor vertex_descriptor;
+  typedef typename Surface::halfedge_descriptor halfedge_descriptor;
+  typedef typename Surface::face_descriptor face_descriptor;
+  typedef typename Surface::Point_3 Point_3;
   /// A point on the surface: a face and barycentric coordinates with respect to `source(halfedge(f))`,
-  /// `target(halfedge(f))`, `target(next(halfedge(f)))`, as `CGAL::Polygon_mesh_processing::Face_location`.
+  /// `target(halfedge(f))`, `target(next(halfedge(f)))`, as `CGAL::Polygon_mesh_processing::Face_location`
+  /// (for a triangle soup: a triangle index and the weights of its three corners, in order).
   typedef std::pair<face_descriptor, std::array<FT, 3>> Face_location;
   /// returned by `nearest_source()` for unreachable points
   static constexpr std::size_t no_source = std::size_t(-1);
@@ -68,18 +71,24 @@ private:
   typedef Geodesic_mesh<FT> Mesh;
   typedef Engine_ Engine;
   typedef typename Mesh::Index Index;
-  typedef typename CGAL::GetInitializedVertexIndexMap<TriangleMesh>::const_type Vertex_index_map;
-  typedef typename CGAL::GetInitializedFaceIndexMap<TriangleMesh>::const_type Face_index_map;
 
 public:
-  // Precomputes the compact mesh. Throws std::invalid_argument on non-triangle faces.
+  // Builds a surface of its own. Throws std::invalid_argument on non-triangle faces.
   Geodesic_distances_facade(const TriangleMesh& tm, VertexPointMap vpm, Geodesic_memory_mode mode)
-    : tm_(tm), vpm_(vpm), vim_(CGAL::get_initialized_vertex_index_map(tm)),
-      fim_(CGAL::get_initialized_face_index_map(tm)), mode_(mode)
+    : Geodesic_distances_facade(std::make_shared<const Surface>(tm, vpm), mode)
+  {}
+
+  // On a shared surface.
+  Geodesic_distances_facade(std::shared_ptr<const Surface> surface, Geodesic_memory_mode mode)
+    : surface_(std::move(surface)), mesh_(checked_surface(surface_).compact_mesh()), mode_(mode)
   {
-    build_geodesic_mesh(tm_, vpm_, vim_, fim_, mesh_, halfedge_of_);
     engine_.reset(new Engine(mesh_));
   }
+
+  // On a surface that outlives the object.
+  Geodesic_distances_facade(const Surface& surface, Geodesic_memory_mode mode)
+    : Geodesic_distances_facade(std::shared_ptr<const Surface>(std::shared_ptr<const Surface>(), &surface), mode)
+  {}
 
   Geodesic_distances_facade(const Geodesic_distances_facade&) = delete;
   Geodesic_distances_facade& operator=(const Geodesic_distances_facade&) = delete;
@@ -90,7 +99,7 @@ public:
   /// Adds a source at vertex `v`; returns its index (0, 1, ... in the order of addition).
   std::size_t add_source(vertex_descriptor v)
   {
-    sources_.push_back(Source{true, Index(get(vim_, v)), -1, {FT(0), FT(0), FT(0)}});
+    sources_.push_back(Source{true, surface_->vertex_index(v), -1, {FT(0), FT(0), FT(0)}});
     invalidate();
     return sources_.size() - 1;
   }
@@ -142,7 +151,7 @@ public:
   {
     stop_targets_.clear();
     for(vertex_descriptor v : targets)
-      stop_targets_.push_back(Index(get(vim_, v)));
+      stop_targets_.push_back(surface_->vertex_index(v));
     invalidate();
   }
 
@@ -212,8 +221,9 @@ public:
   /// The geodesic distance from vertex `v` to the nearest source, `+infinity` if unreachable.
   FT distance(vertex_descriptor v)
   {
+    const Index i = surface_->vertex_index(v);
     compute();
-    return engine_->vertex_distance(Index(get(vim_, v)));
+    return engine_->vertex_distance(i);
   }
 
   /// The geodesic distance from a surface point to the nearest source. Needs the full field.
@@ -228,8 +238,8 @@ public:
   /// The nearest source of vertex `v` and its distance; `(+infinity, no_source)` if unreachable.
   std::pair<FT, std::size_t> nearest_source(vertex_descriptor v)
   {
+    const Index i = surface_->vertex_index(v);
     compute();
-    const Index i = Index(get(vim_, v));
     const Index s = engine_->vertex_source(i);
     return {engine_->vertex_distance(i), s < 0 ? no_source : std::size_t(s)};
   }
@@ -250,8 +260,7 @@ public:
   void distances(VertexDistanceMap distance_map)
   {
     compute();
-    for(vertex_descriptor v : vertices(tm_))
-      put(distance_map, v, engine_->vertex_distance(Index(get(vim_, v))));
+    surface_->for_each_vertex([&](vertex_descriptor v, Index i) { put(distance_map, v, engine_->vertex_distance(i)); });
   }
 
   /// Writes the points of the shortest path from vertex `target` to its nearest source (both included)
@@ -269,8 +278,8 @@ public:
     check_barycentric(target.second, "shortest_path_points");
     compute();
     for_each_path_node(target, [&](const Geodesic_path_node<FT>& node) {
-      *out++ = Point_3(to_double_value(node.point[0]), to_double_value(node.point[1]),
-                       to_double_value(node.point[2]));
+      *out++ = Surface::make_point(to_double_value(node.point[0]), to_double_value(node.point[1]),
+                                   to_double_value(node.point[2]));
     });
     return out;
   }
@@ -292,13 +301,13 @@ public:
     for_each_path_node(target, [&](const Geodesic_path_node<FT>& node) {
       switch(node.kind) {
       case Geodesic_path_node<FT>::VERTEX:
-        visitor(vertex_of(node.index));
+        visitor(surface_->vertex(node.index));
         break;
       case Geodesic_path_node<FT>::EDGE:
-        visitor(halfedge_of_[std::size_t(node.index)], node.t);
+        visitor(surface_->halfedge(node.index), node.t);
         break;
       case Geodesic_path_node<FT>::FACE:
-        visitor(face_of(node.index), node.barycentric);
+        visitor(surface_->face(node.index), node.barycentric);
         break;
       }
     });
@@ -310,13 +319,17 @@ public:
   /// The surface point at vertex `v`, in a face incident to `v`. Throws for isolated vertices.
   Face_location vertex_location(vertex_descriptor v) const
   {
-    const Index h = mesh_.vertex_halfedge[std::size_t(get(vim_, v))];
+    const Index h = mesh_.vertex_halfedge[std::size_t(surface_->vertex_index(v))];
     if(h < 0)
       throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the vertex has no incident face");
     std::array<FT, 3> b = {FT(0), FT(0), FT(0)};
     b[std::size_t(h % 3)] = FT(1);
-    return {face_of(Mesh::face_of(h)), b};
+    return {surface_->face(Mesh::face_of(h)), b};
   }
+
+  /// The prepared surface the object runs on (shared with every object built on it).
+  const Surface& surface() const { return *surface_; }
+  std::shared_ptr<const Surface> shared_surface() const { return surface_; }
 
   /// @}
 
@@ -326,6 +339,18 @@ protected:
   const Mesh& compact_mesh() const { return mesh_; }
   // Options of a derived class changed: the next query recomputes.
   void invalidate() { computed_ = false; }
+
+  // For the classes whose engine follows `twin` alone: refuses a surface with non-manifold or reversed edges.
+  void require_oriented_manifold_edges(const char* class_name, const char* why) const
+  {
+    if(!mesh_.has_special_edges())
+      return;
+    throw std::invalid_argument(std::string("CGAL::Polyhedral_geodesics_3::") + class_name + ": the surface has " +
+                                std::to_string(mesh_.number_of_nonmanifold_edges) +
+                                " edges of three or more faces and " + std::to_string(mesh_.number_of_reversed_edges) +
+                                " edges whose two faces are oriented against each other (non-orientable gluing); " +
+                                why + " (the exact, merged-window and Dijkstra classes support such surfaces)");
+  }
 
 private:
   struct Source
@@ -370,27 +395,18 @@ private:
                                   ": the barycentric coordinates must be >= 0 and sum to 1 (the point must lie in the face)");
   }
 
-  Index face_index(face_descriptor f) const
+  Index face_index(face_descriptor f) const { return surface_->face_index(f); }
+
+  static const Surface& checked_surface(const std::shared_ptr<const Surface>& surface)
   {
-    const std::size_t i = get(fim_, f);
-    if(i >= mesh_.number_of_faces)
-      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: face not in the mesh");
-    return Index(i);
+    if(!surface)
+      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: null surface");
+    return *surface;
   }
 
-  face_descriptor face_of(Index f) const { return face(halfedge_of_[std::size_t(3 * f)], tm_); }
-  vertex_descriptor vertex_of(Index v) const
-  {
-    return source(halfedge_of_[std::size_t(mesh_.vertex_halfedge[std::size_t(v)])], tm_);
-  }
-
-  const TriangleMesh& tm_;
-  VertexPointMap vpm_;
-  Vertex_index_map vim_;
-  Face_index_map fim_;
+  std::shared_ptr<const Surface> surface_;
+  const Mesh& mesh_;
   Geodesic_memory_mode mode_;
-  Mesh mesh_;
-  std::vector<halfedge_descriptor> halfedge_of_;
   std::unique_ptr<Engine> engine_;
   std::vector<Source> sources_;
   std::vector<Index> stop_targets_;

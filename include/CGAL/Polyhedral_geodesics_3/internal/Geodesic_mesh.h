@@ -2,12 +2,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // A compact, index-based copy of a triangle mesh for the geodesic algorithms: faces are numbered
-// 0..F-1 by the mesh's face index map, the three corners of face f are the compact halfedges 3f, 3f+1,
-// 3f+2 (halfedge(f), next, next(next)), every halfedge knows its twin (or -1 on the boundary) and, in
-// its own planar frame, the position of the opposite corner. Building it once makes the propagation
-// independent of the FaceGraph model (Surface_mesh, Polyhedron_3 with or without ids, OpenMesh) and
-// keeps the per-window work on contiguous arrays. The data of a halfedge is one packed record, which every
-// engine reads in place; each record is written once, in order, after passes over small temporary arrays.
+// 0..F-1 (by the mesh's face index map, or in the order of a triangle soup), the three corners of face f are
+// the compact halfedges 3f, 3f+1, 3f+2 (halfedge(f), next, next(next); or the soup triangle's corners 0, 1, 2),
+// every halfedge knows the other halfedges of its edge and, in its own planar frame, the position of the
+// opposite corner. Building it once makes the propagation independent of the input (Surface_mesh, Polyhedron_3
+// with or without ids, OpenMesh, a triangle soup) and keeps the per-window work on contiguous arrays. The data of
+// a halfedge is one packed record, which every engine reads in place. The builders are in
+// build_geodesic_mesh.h (included at the end of this file).
+//
+// Edges. The halfedges of an edge form a cycle (`radial`). On an edge of an oriented manifold surface the
+// cycle is the halfedge and its twin, which runs the other way; on a border edge it is the halfedge alone. A
+// triangle soup may also have *non-manifold* edges (three or more faces) and *reversed* edges (two faces that run
+// through the edge in the same direction, as where a Moebius strip closes); their halfedges have twin -1 and
+// are linked by `radial` only, so engines that read `twin` alone see them as borders and must refuse such
+// meshes (Geodesic_mesh::has_special_edges()).
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_MESH_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_MESH_H
@@ -68,10 +76,13 @@ struct Geodesic_halfedge
 {
   Point_2_ft<FT> opposite; // the opposite corner in the halfedge's frame: source at (0,0), target at (length,0),
                            // the face on the side y >= 0
-  FT length;               // of the edge (the same, bit for bit, on both halfedges)
+  FT length;               // of the edge (the same, bit for bit, on every halfedge of the edge)
   std::int32_t source;     // the source vertex
-  std::int32_t twin;       // the twin halfedge, -1 on the boundary
+  std::int32_t twin;       // the twin halfedge on an edge of an oriented manifold, -1 on a border, non-manifold
+                           // or reversed edge
   std::int32_t edge;       // the undirected edge
+  std::int32_t radial;     // the next halfedge of the same edge (a cycle in increasing order; the twin on an
+                           // oriented manifold edge, the halfedge itself on a border edge)
 };
 
 template <class FT>
@@ -87,8 +98,22 @@ struct Geodesic_mesh
   Large_vector<Geodesic_halfedge<FT>> he;     // per compact halfedge (3 per face)
   Large_vector<Index> edge_halfedge;          // canonical halfedge of each edge (the one the edge frame uses)
   Large_vector<Index> vertex_halfedge;        // one compact halfedge whose source is the vertex, -1 if isolated
-  Large_vector<char> vertex_on_boundary;
+  Large_vector<char> vertex_on_boundary;      // an end of an edge with one face
+  Large_vector<char> vertex_is_singular;      // a pinched vertex (its faces form several fans) or an end of a
+                                              // non-manifold edge: shortest paths may bend there whatever the angles
   Large_vector<FT> vertex_angle_sum;          // sum of the corner angles (as double-precision estimate in FT)
+  Large_vector<Index> star_begin, star;       // the outgoing halfedges of vertex v (every fan) are
+                                              // star[star_begin[v] .. star_begin[v + 1])
+
+  // The shape of the surface (see above).
+  std::size_t number_of_border_edges = 0;
+  std::size_t number_of_nonmanifold_edges = 0; // edges of three or more faces
+  std::size_t number_of_reversed_edges = 0;    // edges of two faces that run through them in the same direction
+  std::size_t number_of_pinched_vertices = 0;  // vertices whose faces form several fans
+  std::size_t number_of_isolated_vertices = 0; // vertices of no face
+
+  // Whether some edge is non-manifold or reversed: engines that follow `twin` alone must refuse the mesh.
+  bool has_special_edges() const { return number_of_nonmanifold_edges + number_of_reversed_edges > 0; }
 
   static Index face_of(Index h) { return h / 3; }
   static Index next(Index h) { return h % 3 == 2 ? h - 2 : h + 1; }
@@ -96,7 +121,32 @@ struct Geodesic_mesh
   Index source(Index h) const { return he[std::size_t(h)].source; }
   Index target(Index h) const { return he[std::size_t(next(h))].source; }
   Index opposite_vertex(Index h) const { return he[std::size_t(prev(h))].source; }
+  Index radial(Index h) const { return he[std::size_t(h)].radial; }
+  // Whether h and g (two halfedges of one edge) run in the same direction.
+  bool same_direction(Index h, Index g) const { return source(h) == source(g); }
+  // Whether h runs in the direction of its edge's canonical halfedge (whose frame the edge's windows use).
+  bool runs_like_canonical(Index h) const
+  {
+    return source(h) == source(edge_halfedge[std::size_t(he[std::size_t(h)].edge)]);
+  }
+  // Calls f(g) for every other halfedge g of h's edge (the twin on an oriented manifold edge, none on a border).
+  template <class F>
+  void for_each_other_halfedge(Index h, F f) const
+  {
+    for(Index g = he[std::size_t(h)].radial; g != h; g = he[std::size_t(g)].radial)
+      f(g);
+  }
 };
+
+// The bytes a compact mesh holds.
+template <class FT>
+std::size_t compact_mesh_bytes(const Geodesic_mesh<FT>& m)
+{
+  return m.points.capacity() * sizeof(m.points[0]) + m.he.capacity() * sizeof(Geodesic_halfedge<FT>) +
+         (m.edge_halfedge.capacity() + m.vertex_halfedge.capacity() + m.star_begin.capacity() + m.star.capacity()) *
+             sizeof(typename Geodesic_mesh<FT>::Index) +
+         m.vertex_on_boundary.capacity() + m.vertex_is_singular.capacity() + m.vertex_angle_sum.capacity() * sizeof(FT);
+}
 
 // The outgoing compact halfedges of every vertex, as compressed rows: those of v are
 // star[star_begin[v] .. star_begin[v + 1]).
@@ -143,10 +193,12 @@ bool expand_reached_neighbours_of_unreached(const Geodesic_mesh<FT>& mesh, const
 
 // Shortest paths can bend only at saddle vertices (angle sum above 2 pi) and boundary vertices. Flat vertices
 // are included: rounding decides their side.
+// Singular vertices (pinched, or on a non-manifold edge) are included whatever their angles.
 template <class FT>
 bool is_saddle_or_boundary_vertex(const Geodesic_mesh<FT>& mesh, std::size_t v)
 {
-  return mesh.vertex_on_boundary[v] || to_double_value(mesh.vertex_angle_sum[v]) > 2 * 3.14159265358979323846 - 1e-9;
+  return mesh.vertex_on_boundary[v] || (!mesh.vertex_is_singular.empty() && mesh.vertex_is_singular[v]) ||
+         to_double_value(mesh.vertex_angle_sum[v]) > 2 * 3.14159265358979323846 - 1e-9;
 }
 
 template <class FT>
@@ -188,6 +240,7 @@ class Vertex_angle_accumulator
 {
 public:
   explicit Vertex_angle_accumulator(std::size_t n) : acc_(n, Product{1.0, 0.0, 0}) {}
+  Vertex_angle_accumulator() = default;
 
   void add(std::size_t v, double x, double y)
   {
@@ -229,223 +282,14 @@ private:
     double re, im;
     int turns;
   };
-  std::vector<Product> acc_;
+  Large_vector<Product> acc_; // 4 KiB pages cost 4 microseconds each here: 14 MB (600k vertices) took 60 ms
 };
-
-// The compact twin of every compact halfedge h (halfedge_of[h] the original one), -1 on the boundary, through the
-// mesh's own opposite() (going through the original connectivity, not vertex pairs, keeps pinched vertices and
-// duplicated edges of non-manifold inputs apart). Models without an internal halfedge index: from the opposite
-// halfedge's face, halfedge(face) and then next() until the opposite halfedge itself.
-template <class TriangleMesh, class FaceIndexMap, class IndexVector,
-          bool has_halfedge_index = CGAL::graph_has_property<TriangleMesh, boost::halfedge_index_t>::value>
-struct Compact_twins
-{
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-
-  static void compute(const TriangleMesh& tm, FaceIndexMap fim, const std::vector<halfedge_descriptor>& halfedge_of,
-                      IndexVector& twin_of)
-  {
-    for(std::size_t h = 0; h < halfedge_of.size(); ++h) {
-      std::int32_t twin = -1;
-      const halfedge_descriptor oh = opposite(halfedge_of[h], tm);
-      if(!is_border(oh, tm)) {
-        const auto of = face(oh, tm);
-        halfedge_descriptor g = halfedge(of, tm);
-        int ok = 0;
-        while(g != oh) { g = next(g, tm); ++ok; }
-        twin = std::int32_t(3 * get(fim, of) + std::size_t(ok));
-      }
-      twin_of[h] = twin;
-    }
-  }
-};
-
-// Models with an internal halfedge index (Surface_mesh, OpenMesh, Polyhedron_3 with ids): an array from that index
-// to the compact halfedge, so the twin is two lookups. The walk above, three dependent random reads of the input
-// mesh per halfedge, was 0.55 of 3.2 ms of the construction at 10k vertices (Surface_mesh, warm caches). A
-// boundary halfedge is in no face, so its entry stays -1, which is the twin of its opposite.
-template <class TriangleMesh, class FaceIndexMap, class IndexVector>
-struct Compact_twins<TriangleMesh, FaceIndexMap, IndexVector, true>
-{
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-
-  static void compute(const TriangleMesh& tm, FaceIndexMap, const std::vector<halfedge_descriptor>& halfedge_of,
-                      IndexVector& twin_of)
-  {
-    const auto him = CGAL::get_initialized_halfedge_index_map(tm);
-    const std::size_t nhm = num_halfedges(tm); // Surface_mesh: removed halfedges included, as in its indices
-    std::vector<std::int32_t> compact_of(nhm, -1);
-    for(std::size_t h = 0; h < halfedge_of.size(); ++h) {
-      const std::size_t i = std::size_t(get(him, halfedge_of[h]));
-      if(i >= nhm)
-        throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the halfedge index map is not in [0, num_halfedges)");
-      compact_of[i] = std::int32_t(h);
-    }
-    for(std::size_t h = 0; h < halfedge_of.size(); ++h) {
-      const std::size_t i = std::size_t(get(him, opposite(halfedge_of[h], tm)));
-      twin_of[h] = i < nhm ? compact_of[i] : std::int32_t(-1);
-    }
-  }
-};
-
-// The halfedge records of the compact mesh (and halfedge_of), from the mesh's connectivity and mesh.points.
-// Returns the largest edge length (+infinity when a length overflows).
-template <class FT, class TriangleMesh, class VertexIndexMap, class FaceIndexMap>
-double build_halfedge_records(const TriangleMesh& tm, VertexIndexMap vim, FaceIndexMap fim, Geodesic_mesh<FT>& mesh,
-                            std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& halfedge_of)
-{
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef Geodesic_mesh<FT> Mesh;
-  typedef typename Mesh::Index Index;
-  using std::sqrt;
-
-  // The records are written once, in order, by the last pass below; the passes before it fill small arrays.
-  // At 150k vertices the 36 MB of records no longer fit the processor's cache, while arrays of 4 bytes per
-  // halfedge do: filling the records field by field, or reading a twin's record, cost 1.3 times the time.
-  const std::size_t nf = mesh.number_of_faces, nh = 3 * nf;
-  halfedge_of.resize(nh);
-  Large_vector<Index> source_of(nh), twin_of(nh), edge_of(nh);
-
-  // Connectivity: the source of each compact halfedge, and the original halfedge it stands for.
-  {
-    std::vector<char> face_seen(nf, 0);
-    std::size_t seen = 0;
-    for(auto f : faces(tm)) {
-      const std::size_t fi = get(fim, f);
-      if(fi >= nf || face_seen[fi])
-        throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the face index map is not a bijection onto [0, num_faces)");
-      face_seen[fi] = 1;
-      ++seen;
-      halfedge_descriptor h = halfedge(f, tm);
-      if(next(next(next(h, tm), tm), tm) != h)
-        throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the mesh has a face that is not a triangle "
-                                    "(triangulate it first, e.g. with CGAL::Polygon_mesh_processing::triangulate_faces)");
-      for(int k = 0; k < 3; ++k, h = next(h, tm)) {
-        halfedge_of[3 * fi + k] = h;
-        source_of[3 * fi + k] = Index(get(vim, source(h, tm)));
-      }
-    }
-    // Fewer faces than num_faces(): a Surface_mesh with removed faces counts them in num_faces() and its
-    // indices, so the compact faces of those would be left without data.
-    if(seen != nf)
-      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the face index map is not a bijection onto "
-                                  "[0, num_faces) (a Surface_mesh with removed elements: call collect_garbage() first)");
-  }
-
-  // The twins: a pass of its own, whose accesses to the mesh are random; without other work in the loop the
-  // processor overlaps many of them.
-  Compact_twins<TriangleMesh, FaceIndexMap, Large_vector<Index>>::compute(tm, fim, halfedge_of, twin_of);
-
-  // The edges, numbered in the order of their first halfedge (the canonical one); the second gets the number
-  // ahead, when the first is numbered.
-  mesh.edge_halfedge.clear();
-  mesh.edge_halfedge.reserve(nh); // an upper bound (closed meshes use half): no reallocation
-  for(std::size_t h = 0; h < nh; ++h) {
-    const Index twin = twin_of[h];
-    if(twin < 0 || std::size_t(twin) > h) {
-      edge_of[h] = Index(mesh.edge_halfedge.size());
-      if(twin >= 0)
-        edge_of[std::size_t(twin)] = edge_of[h];
-      mesh.edge_halfedge.push_back(Index(h));
-    }
-  }
-
-  // The records, in order: the length of the edge, computed from the canonical halfedge's end points in that
-  // order on both sides, so that the two halfedges agree bit for bit (the window frames of the two sides are
-  // mirror images), and the opposite corner in the halfedge's frame.
-  mesh.he.clear();
-  mesh.he.reserve(nh);
-  double largest_length = 0;
-  for(std::size_t h = 0; h < nh; ++h) {
-    const Index twin = twin_of[h];
-    const Index a = source_of[h], b = source_of[std::size_t(Mesh::next(Index(h)))];
-    const Index c = source_of[std::size_t(Mesh::prev(Index(h)))];
-    const bool canonical = twin < 0 || std::size_t(twin) > h;
-    const FT length = sqrt(canonical ? squared_distance_3(mesh.points[std::size_t(a)], mesh.points[std::size_t(b)])
-                                     : squared_distance_3(mesh.points[std::size_t(b)], mesh.points[std::size_t(a)]));
-    const Point_2_ft<FT> opposite = halfedge_frame_opposite(mesh.points[std::size_t(a)], mesh.points[std::size_t(b)],
-                                                            mesh.points[std::size_t(c)], length);
-    const double length_double = to_double_value(length); // NaN when the squared length overflowed
-    largest_length = std::isnan(length_double) ? std::numeric_limits<double>::infinity()
-                                               : (std::max)(largest_length, length_double);
-    mesh.he.push_back(Geodesic_halfedge<FT>{opposite, length, a, twin, edge_of[h]});
-  }
-  mesh.number_of_edges = mesh.edge_halfedge.size();
-  return largest_length;
-}
-
-template <class FT, class TriangleMesh, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>
-void build_geodesic_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim,
-                         Geodesic_mesh<FT>& mesh,
-                         std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>& halfedge_of)
-{
-  typedef typename Geodesic_mesh<FT>::Index Index;
-
-  const std::size_t nv = num_vertices(tm), nf = num_faces(tm);
-  if(nv > std::size_t(INT32_MAX / 2) || 3 * nf > std::size_t(INT32_MAX / 2))
-    throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: mesh too large for 32-bit indices");
-  mesh.number_of_vertices = nv;
-  mesh.number_of_faces = nf;
-  mesh.points.assign(nv, std::array<FT, 3>{FT(0), FT(0), FT(0)});
-  CGAL::Bbox_3 box;
-  for(auto v : vertices(tm)) {
-    const std::size_t i = get(vim, v);
-    if(i >= nv)
-      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: the vertex index map is not in [0, num_vertices)");
-    const auto& p = get(vpm, v);
-    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
-    // A NaN or infinite coordinate would leave its vertex unreachable by every engine, and the safety net of
-    // the window engines would expand its neighbours forever.
-    if(!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
-      throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: vertex " + std::to_string(i) +
-                                  " has a coordinate that is not finite (NaN or infinity)");
-    mesh.points[i] = {FT(x), FT(y), FT(z)};
-    box += CGAL::Bbox_3(x, y, z, x, y, z);
-  }
-
-  // The halfedge records; their temporary arrays are released before the vertex pass.
-  const double largest_length = build_halfedge_records(tm, vim, fim, mesh, halfedge_of);
-
-  // The engines work in double with products of several lengths (squared distances of pseudo-sources, the
-  // frames' cross products), so far from unit scale these under- or overflow. Exact (both schedules), merged,
-  // flat-exact and fast marching give the same distances, bit for bit up to the scale, for CGAL's elephant
-  // (diameter about 1, edges about 0.015) scaled by 2^-150 to 2^150; at 2^-170 and 2^190 the window engines are
-  // off by 1e-6 to 5e-2, at 1e-90 the exact one did not end, and at 1e100 the frames overflow. Hence a
-  // precondition with a margin: the largest edge at least 1e-40 and the bounding box's diagonal at most 1e40.
-  const double diagonal = MDCS::internal::bbox_diagonal(box);
-  if(nf > 0 && !(largest_length >= 1e-40 && diagonal <= 1e40)) {
-    char text[96];
-    std::snprintf(text, sizeof text, "largest edge length %g, bounding box diagonal %g", largest_length, diagonal);
-    throw std::invalid_argument(std::string("CGAL::Polyhedral_geodesics_3: the mesh's scale is out of range (") +
-                                text + "): the largest edge must be at least 1e-40 and the bounding box diagonal "
-                                "at most 1e40 (scale the mesh, e.g. with CGAL::Polygon_mesh_processing::transform)");
-  }
-
-  // Per vertex (a pass of its own, for the same reason as the twins): one outgoing halfedge, the boundary flag,
-  // and the sum of the corner angles.
-  const std::size_t nh = 3 * nf;
-  mesh.vertex_halfedge.assign(nv, -1);
-  mesh.vertex_on_boundary.assign(nv, 0);
-  Vertex_angle_accumulator angles(nv);
-  for(std::size_t h = 0; h < nh; ++h) {
-    const Geodesic_halfedge<FT>& r = mesh.he[h];
-    const Index a = r.source;
-    if(mesh.vertex_halfedge[std::size_t(a)] < 0)
-      mesh.vertex_halfedge[std::size_t(a)] = Index(h);
-    if(r.twin < 0) {
-      mesh.vertex_on_boundary[std::size_t(a)] = 1;
-      mesh.vertex_on_boundary[std::size_t(mesh.target(Index(h)))] = 1;
-    }
-    // the corner at the source of h, between h and prev(h) reversed: the opposite corner in h's frame
-    angles.add(std::size_t(a), to_double_value(r.opposite.x), to_double_value(r.opposite.y));
-  }
-  mesh.vertex_angle_sum.resize(nv);
-  for(std::size_t v = 0; v < nv; ++v)
-    mesh.vertex_angle_sum[v] = FT(angles.sum(v));
-}
 
 } // namespace internal
 } // namespace Polyhedral_geodesics_3
 } // namespace CGAL
+
+// The builders (from a FaceGraph, from a triangle soup) need the declarations above.
+#include <CGAL/Polyhedral_geodesics_3/internal/build_geodesic_mesh.h>
 
 #endif // CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_MESH_H

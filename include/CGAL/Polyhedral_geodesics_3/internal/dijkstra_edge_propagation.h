@@ -110,13 +110,14 @@ public:
     const Index k = Index(face_sources_.size());
     face_sources_.push_back(s);
     incarnations_.push_back({f, k});
-    if(s.halfedge >= 0 && mesh_.he[std::size_t(s.halfedge)].twin >= 0)
-      incarnations_.push_back({Mesh::face_of(mesh_.he[std::size_t(s.halfedge)].twin), k});
-    for(Index g : faces_of_source(k))
+    if(s.halfedge >= 0)
+      mesh_.for_each_other_halfedge(s.halfedge, [&](Index tw) { incarnations_.push_back({Mesh::face_of(tw), k}); });
+    for_each_face_of_source(k, [&](Index g) {
       for(int c = 0; c < 3; ++c) {
         const Index u = mesh_.source(3 * g + c);
         lower(u, euclidean(s.point, mesh_.points[std::size_t(u)]), id, -2 - k);
       }
+    });
   }
 
   FT vertex_distance(Index v) const
@@ -176,12 +177,15 @@ protected:
     return 3 * f + (z + 1) % 3;
   }
 
-  // the faces that contain the surface-point source k (one, or two for a point on an interior edge)
-  std::array<Index, 2> faces_of_source(Index k) const
+  // Calls f(g) for the faces that contain the surface-point source k: its face, and for a point on an edge the
+  // faces of the other halfedges of that edge.
+  template <class F>
+  void for_each_face_of_source(Index k, F f) const
   {
     const Face_source& s = face_sources_[std::size_t(k)];
-    const Index tw = s.halfedge >= 0 ? mesh_.he[std::size_t(s.halfedge)].twin : Index(-1);
-    return {s.face, tw >= 0 ? Mesh::face_of(tw) : s.face};
+    f(s.face);
+    if(s.halfedge >= 0)
+      mesh_.for_each_other_halfedge(s.halfedge, [&](Index tw) { f(Mesh::face_of(tw)); });
   }
 
   // ------------------------------------------------------------------------------------------------
@@ -282,19 +286,11 @@ protected:
   {
     if(incarnations_.empty())
       return;
-    Index faces[2] = {f, -1};
     int zeros = 0;
     for(int k = 0; k < 3; ++k)
       if(b[std::size_t(k)] == FT(0))
         ++zeros;
-    if(zeros == 1) {
-      const Index tw = mesh_.he[std::size_t(halfedge_of_edge_point(f, b))].twin;
-      if(tw >= 0)
-        faces[1] = Mesh::face_of(tw);
-    }
-    for(Index g : faces) {
-      if(g < 0)
-        continue;
+    auto in_face = [&](Index g) {
       auto it = std::lower_bound(incarnations_.begin(), incarnations_.end(), std::pair<Index, Index>(g, Index(-1)));
       for(; it != incarnations_.end() && it->first == g; ++it) {
         const FT d = euclidean(p, face_sources_[std::size_t(it->second)].point);
@@ -304,7 +300,10 @@ protected:
           best.face_source = it->second;
         }
       }
-    }
+    };
+    in_face(f);
+    if(zeros == 1) // a point on an edge: also in the faces of the edge's other halfedges
+      mesh_.for_each_other_halfedge(halfedge_of_edge_point(f, b), in_face);
   }
 
   // Final corners of f: d(v) + |p - v|.
@@ -407,6 +406,8 @@ protected:
 
   // ------------------------------------------------------------------------------------------------
   // Vertex neighbours (compressed rows): every edge once in each direction (built by the engines that use them).
+  // A halfedge gives its own direction, and a border halfedge the other one too; an edge of three or more faces,
+  // or a reversed one, gives both directions once, at its canonical halfedge.
 
   struct Neighbour
   {
@@ -418,9 +419,20 @@ protected:
   {
     const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
     neighbour_begin_.assign(nv + 1, 0);
+    // 0: nothing, 1: source -> target, 2: both directions
+    auto directions = [&](std::size_t h) -> int {
+      const Geodesic_halfedge<FT>& r = mesh_.he[h];
+      if(r.twin >= 0)
+        return 1;
+      if(r.radial == Index(h))
+        return 2;
+      return mesh_.edge_halfedge[std::size_t(r.edge)] == Index(h) ? 2 : 0;
+    };
     for(std::size_t h = 0; h < nh; ++h) {
-      ++neighbour_begin_[std::size_t(mesh_.he[h].source) + 1];
-      if(mesh_.he[h].twin < 0)
+      const int d = directions(h);
+      if(d >= 1)
+        ++neighbour_begin_[std::size_t(mesh_.he[h].source) + 1];
+      if(d == 2)
         ++neighbour_begin_[std::size_t(mesh_.target(Index(h))) + 1];
     }
     for(std::size_t v = 0; v < nv; ++v)
@@ -428,9 +440,11 @@ protected:
     neighbours_.assign(std::size_t(neighbour_begin_[nv]), Neighbour{-1, FT(0)});
     std::vector<Index> fill(neighbour_begin_.begin(), neighbour_begin_.end() - 1);
     for(std::size_t h = 0; h < nh; ++h) {
+      const int d = directions(h);
       const Index a = mesh_.source(Index(h)), c = mesh_.target(Index(h));
-      neighbours_[std::size_t(fill[std::size_t(a)]++)] = Neighbour{c, mesh_.he[h].length};
-      if(mesh_.he[h].twin < 0)
+      if(d >= 1)
+        neighbours_[std::size_t(fill[std::size_t(a)]++)] = Neighbour{c, mesh_.he[h].length};
+      if(d == 2)
         neighbours_[std::size_t(fill[std::size_t(c)]++)] = Neighbour{a, mesh_.he[h].length};
     }
   }

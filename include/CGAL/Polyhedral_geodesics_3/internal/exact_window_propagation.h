@@ -4,7 +4,8 @@
 // The exact interval ("window") propagation with side lobes (thesis, chapter 4.1), on the compact mesh.
 //
 // - Every edge holds the lower envelope of its windows: a doubly linked list sorted along the edge.
-// - A window is propagated once, across the face on the far side from its pseudo-source S. On each of
+// - A window is propagated once, across the face on the far side from its pseudo-source S (across every such face
+//   of an edge of three or more faces; each is unfolded on its own, see geodesic_window.h). On each of
 //   the two other edges of that face a point y is reached either straight from S (the segment S-y
 //   crosses the window: the *central* part) or through the nearer end point P0 or P1 of the window
 //   (the *side lobes*, rooted at P0 and P1 with offsets sigma + |S P0|, sigma + |S P1|). A lobe rooted at
@@ -172,14 +173,14 @@ public:
       const FT len = mesh_.he[g].length;
       const FT t = b[(k + 1) % 3] * len;
       insert_piece_no_propagation(g, FT(0), len, t, FT(0), FT(0), id);
-      const Index tw = mesh_.he[g].twin;
-      if(tw >= 0) {
-        const Index f2 = Mesh::face_of(tw);
+      // every other face of the edge (the twin's on an oriented manifold edge)
+      mesh_.for_each_other_halfedge(g, [&](Index tw) {
         std::array<FT, 3> b2 = {FT(0), FT(0), FT(0)};
-        b2[tw % 3] = b[(k + 1) % 3];       // source(tw) == target(g)
-        b2[(tw % 3 + 1) % 3] = b[k];       // target(tw) == source(g)
-        add_point_source_in_face(f2, b2, id);
-      }
+        const bool same = mesh_.same_direction(tw, g);
+        b2[std::size_t(tw % 3)] = same ? b[k] : b[(k + 1) % 3];             // the weight of source(tw)
+        b2[std::size_t((tw % 3 + 1) % 3)] = same ? b[(k + 1) % 3] : b[k];   // the weight of target(tw)
+        add_point_source_in_face(Mesh::face_of(tw), b2, id);
+      });
     }
   }
 
@@ -206,7 +207,7 @@ public:
             stopped_early_ = true;
             break;
           }
-          expand_vertex(v);
+          expand_vertex(v, !is_bend_vertex(v));
           continue;
         }
         Window& w = windows_[std::size_t(top.window)];
@@ -442,7 +443,8 @@ private:
   // side lobes rooted at the vertex, emitted once, when its distance is final, instead of by every window
   // that ends there (those lobes would carry the window's own, possibly larger, value at the vertex; and
   // pruning may remove the window that would have carried the best one).
-  void expand_vertex(Index v)
+  // `filler`: the vertex is not one where shortest paths bend (see Window_edge_envelope::mergeable_over).
+  void expand_vertex(Index v, bool filler = false)
   {
     ensure_vertex_star();
     expanded_stamp_[std::size_t(v)] = vertex_stamp_[std::size_t(v)];
@@ -452,7 +454,7 @@ private:
       const Index h = star_[std::size_t(k)];  // source(h) == v
       const Index g = Mesh::next(h);          // the edge opposite v in the face of h
       const auto& p = mesh_.he[std::size_t(g)].opposite;
-      insert_piece(g, FT(0), mesh_.he[std::size_t(g)].length, p.x, p.y, d, id);
+      insert_piece(g, FT(0), mesh_.he[std::size_t(g)].length, p.x, p.y, d, id, filler);
       insert_piece_no_propagation(h, FT(0), mesh_.he[std::size_t(h)].length, FT(0), FT(0), d, id);
       const Index hp = Mesh::prev(h);
       insert_piece_no_propagation(hp, FT(0), mesh_.he[std::size_t(hp)].length, mesh_.he[std::size_t(hp)].length,
@@ -474,18 +476,35 @@ private:
     }
   }
 
+  // A vertex where shortest paths can bend, strictly (for merging; the exact rule, is_saddle_or_boundary_vertex,
+  // also takes flat vertices and every border vertex): a singular vertex, a saddle, or a border vertex whose angle
+  // sum exceeds pi, with a margin of 1e-9 for rounding.
+  bool is_bend_vertex(Index v) const
+  {
+    const double pi = 3.14159265358979323846;
+    const std::size_t i = std::size_t(v);
+    if(!mesh_.vertex_is_singular.empty() && mesh_.vertex_is_singular[i])
+      return true;
+    return to_double_value(mesh_.vertex_angle_sum[i]) > (mesh_.vertex_on_boundary[i] ? pi : 2 * pi) + 1e-9;
+  }
+
   // ------------------------------------------------------------------------------------------------
-  // Propagation of one window across the face it looks into
+  // Propagation of one window across the faces it looks into: the twin's face on an edge of an oriented manifold,
+  // every face but the one it comes from on a non-manifold edge.
 
   void propagate(Index wi)
   {
+    const Index from = windows_[std::size_t(wi)].from_halfedge;
+    mesh_.for_each_other_halfedge(from, [&](Index h) { propagate_into(wi, h); });
+  }
+
+  void propagate_into(Index wi, Index h)
+  {
     const Window& w = windows_[std::size_t(wi)];
-    const Index h = w.into_halfedge;
     const Index source = w.source;
     const Local_window<FT> lw_in = local_window(w, h);
     const Index prev_w = w.prev, next_w = w.next;
-    const Index edge = w.edge;
-    const bool canonical = (h == mesh_.edge_halfedge[std::size_t(edge)]);
+    const bool canonical = this->runs_like_canonical(h);
     const FT L = mesh_.he[std::size_t(h)].length;
     const Point_2_ft<FT> c = mesh_.he[std::size_t(h)].opposite;
     const Index va = mesh_.source(h), vb = mesh_.target(h), vc = mesh_.opposite_vertex(h);
@@ -535,7 +554,12 @@ private:
     else dc = lw.sigma + distance_2(lw.sx, lw.sy, c.x, c.y);
     update_vertex(vc, dc, source);
 
-    const Propagation_data pd{lw, d_p0, d_p1, xc, flat_source, lobe0, lobe1, source, h};
+    // Fillers (for merging): the children of a filler, and the side lobes rooted inside the edge (gap fillers) or at a
+    // vertex where no path bends.
+    const bool filler = windows_[std::size_t(wi)].filler;
+    const bool lobe0_filler = lw.b0 > FT(0) || !is_bend_vertex(va);
+    const bool lobe1_filler = lw.b1 < L || !is_bend_vertex(vb);
+    const Propagation_data pd{lw, d_p0, d_p1, xc, flat_source, lobe0, lobe1, filler, lobe0_filler, lobe1_filler, source, h};
     // edge C->A (halfedge prev(h)), walked from A (u = 0) to C (u = 1)
     emit_pieces(pd, Mesh::prev(h), FT(0), FT(0), c, FT(0), true);
     // edge B->C (halfedge next(h)), walked from B (u = 0) to C (u = 1)
@@ -578,7 +602,7 @@ private:
     if(n < 0)
       return false;
     const Window& nw = windows_[std::size_t(n)];
-    if(nw.into_halfedge != h)
+    if(!this->propagates_into(nw.from_halfedge, h))
       return false;
     const Local_window<FT> ln = local_window(nw, h);
     return at_start ? ln.b1 == x : ln.b0 == x;
@@ -589,6 +613,7 @@ private:
     Local_window<FT> w;
     FT d_p0, d_p1, xc;
     bool flat_source, lobe0, lobe1;
+    bool filler, lobe0_filler, lobe1_filler;
     Index source, h;
   };
 
@@ -637,17 +662,17 @@ private:
     }
     // P is source(h) or target(h); in the frame of g the target-edge points are source(g) + t e.
     if(ub > ua || (len == FT(0) && ub == FT(1)))
-      emit_one(pd, g, px, py, c, reversed, ua, ub, w.sx, w.sy, w.sigma);
+      emit_one(pd, g, px, py, c, reversed, ua, ub, w.sx, w.sy, w.sigma, pd.filler);
     if(pd.lobe0 && (l0b > l0a || (len == FT(0) && l0b == FT(1))))
-      emit_one(pd, g, px, py, c, reversed, l0a, l0b, w.b0, FT(0), pd.d_p0);
+      emit_one(pd, g, px, py, c, reversed, l0a, l0b, w.b0, FT(0), pd.d_p0, pd.lobe0_filler);
     if(pd.lobe1 && (l1b > l1a || (len == FT(0) && l1b == FT(1))))
-      emit_one(pd, g, px, py, c, reversed, l1a, l1b, w.b1, FT(0), pd.d_p1);
+      emit_one(pd, g, px, py, c, reversed, l1a, l1b, w.b1, FT(0), pd.d_p1, pd.lobe1_filler);
   }
 
   // Inserts the part [ua, ub] of the target edge (P + u (C - P)) with pseudo-source (qx, qy) of the h
   // frame and offset sigma, converting to the frame of the target halfedge g.
   void emit_one(const Propagation_data& pd, Index g, const FT& px, const FT& py, const Point_2_ft<FT>& c,
-                bool reversed, const FT& ua, const FT& ub, const FT& qx, const FT& qy, const FT& sigma)
+                bool reversed, const FT& ua, const FT& ub, const FT& qx, const FT& qy, const FT& sigma, bool filler)
   {
     using std::sqrt;
     const FT len = mesh_.he[std::size_t(g)].length;
@@ -670,7 +695,7 @@ private:
     else         { t0 = len * ua; t1 = len * ub; }
     if(ua == FT(0)) { if(reversed) t1 = len; else t0 = FT(0); }
     if(ub == FT(1)) { if(reversed) t0 = FT(0); else t1 = len; }
-    insert_piece(g, t0, t1, sx, sy, sigma, pd.source);
+    insert_piece(g, t0, t1, sx, sy, sigma, pd.source, filler);
   }
 
 

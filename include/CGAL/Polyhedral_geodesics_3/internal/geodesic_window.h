@@ -8,6 +8,14 @@
 // Frames. Every compact halfedge h has a planar frame: source(h) at (0,0), target(h) at (L,0), the face
 // of h on the side y >= 0. A window is stored in the frame of its edge's canonical halfedge; the frame of
 // the twin is the mirror image x -> L - x, y -> -y.
+//
+// Sides. A window lies on one side of its edge: its pseudo-source is on the side of the face of its
+// `from_halfedge` (the face it crossed, or the face of the vertex or point it comes from), and it propagates into
+// the face of every other halfedge of the edge: the twin on an edge of an oriented manifold, every other face of a
+// non-manifold edge. Each of those faces is unfolded on its own across the edge, opposite the from face, so no
+// global orientation is needed: where two faces run through the edge in the same direction (a reversed edge, as
+// where a Moebius strip closes), the unfolding is the reflection y -> -y alone. Window_field::local_window()
+// gives a window in the frame of any halfedge of its edge.
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_WINDOW_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_GEODESIC_WINDOW_H
@@ -35,9 +43,10 @@ struct alignas(64) Geodesic_window
   FT sx, sy;     // the pseudo-source in the edge frame
   FT sigma;      // the distance from the source to the pseudo-source
   Index edge;
-  Index into_halfedge;    // the halfedge whose face the window propagates into, -1 if none
+  Index from_halfedge;    // the window propagates into the faces of the other halfedges of its edge; -1: into none
   Index source;           // index of the source the window's paths start from
-  std::uint32_t stamp : 30; // incremented whenever the window changes or dies (lazy deletion in the queue)
+  std::uint32_t stamp : 29; // incremented whenever the window changes or dies (lazy deletion in the queue)
+  std::uint32_t filler : 1; // rooted at a point where no shortest path bends (see Window_edge_envelope::mergeable)
   std::uint32_t processed : 1; // already propagated
   std::uint32_t alive : 1;
 };
@@ -103,6 +112,35 @@ FT window_merge_deviation(const FT& w_sx, const FT& w_sy, const FT& w_sigma, con
       worst = diff;
   }
   return worst;
+}
+
+// The smallest value of D_a - D_b on [lo, hi] for two window functions a = (a_sx, a_sy, a_sigma) and b: as above, the
+// extremes of the difference are at the interval's ends or where both pseudo-sources are seen under the same angle.
+template <class FT>
+FT window_min_difference(const FT& a_sx, const FT& a_sy, const FT& a_sigma, const FT& b_sx, const FT& b_sy,
+                         const FT& b_sigma, const FT& lo, const FT& hi)
+{
+  using std::abs;
+  FT xs[4];
+  int count = 0;
+  xs[count++] = lo;
+  xs[count++] = hi;
+  const FT ha = abs(a_sy), hb = abs(b_sy);
+  for(int sign = -1; sign <= 1; sign += 2) {
+    const FT den = hb + FT(sign) * ha;
+    if(den != FT(0)) {
+      const FT x = (a_sx * hb + FT(sign) * b_sx * ha) / den;
+      if(lo < x && x < hi)
+        xs[count++] = x;
+    }
+  }
+  FT smallest = window_distance_at(xs[0], a_sx, a_sy, a_sigma) - window_distance_at(xs[0], b_sx, b_sy, b_sigma);
+  for(int k = 1; k < count; ++k) {
+    const FT diff = window_distance_at(xs[k], a_sx, a_sy, a_sigma) - window_distance_at(xs[k], b_sx, b_sy, b_sigma);
+    if(diff < smallest)
+      smallest = diff;
+  }
+  return smallest;
 }
 
 template <class FT>

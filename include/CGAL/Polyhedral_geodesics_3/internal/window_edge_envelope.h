@@ -86,6 +86,7 @@ protected:
     }
     const std::size_t i = windows_.emplace_back();
     windows_[i].stamp = 0;
+    windows_[i].filler = false;
     windows_[i].alive = false;
     windows_[i].processed = false;
     return Index(i);
@@ -109,7 +110,7 @@ protected:
 
   // Links a new window after `after` (-1: at the front of the edge's list).
   Index create_window(Index edge, Index after, const FT& b0, const FT& b1, const FT& sx, const FT& sy,
-                      const FT& sigma, Index into, Index source, bool processed)
+                      const FT& sigma, Index from, Index source, bool processed, bool filler)
   {
     const Index wi = allocate_window();
     Window& w = windows_[std::size_t(wi)];
@@ -120,10 +121,11 @@ protected:
     w.sy = sy;
     w.sigma = sigma;
     w.edge = edge;
-    w.into_halfedge = into;
+    w.from_halfedge = from;
     w.source = source;
     ++w.stamp;
-    w.processed = processed || into < 0;
+    w.processed = processed || from < 0;
+    w.filler = filler;
     w.alive = true;
     if(after < 0) {
       w.next = edge_first_[std::size_t(edge)];
@@ -179,23 +181,26 @@ protected:
   }
 
   // Inserts the candidate window [t0, t1] with pseudo-source (sx, sy) and offset sigma, given in the
-  // frame of halfedge g, into the lower envelope of g's edge. It propagates into the face of g's twin.
-  void insert_piece(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source)
+  // frame of halfedge g (the pseudo-source on the side of g's face), into the lower envelope of g's edge. It
+  // propagates into the faces of the other halfedges of the edge (none on a border edge).
+  // `filler`: the piece's function is rooted at a point where no shortest path bends (see mergeable_over()).
+  void insert_piece(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source, bool filler = false)
   {
-    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, mesh_.he[std::size_t(g)].twin);
+    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, mesh_.he[std::size_t(g)].radial == g ? Index(-1) : g, filler);
   }
 
   void insert_piece_no_propagation(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source)
   {
-    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, -1);
+    insert_piece_impl(g, t0, t1, sx, sy, sigma, source, -1, false);
   }
 
-  void insert_piece_impl(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source, Index into)
+  void insert_piece_impl(Index g, FT t0, FT t1, FT sx, FT sy, const FT& sigma, Index source, Index from, bool filler)
   {
     const Index e = mesh_.he[std::size_t(g)].edge;
     const Index hc = mesh_.edge_halfedge[std::size_t(e)];
     const FT L = mesh_.he[std::size_t(g)].length;
-    if(g != hc) {
+    if(!this->runs_like_canonical(g)) {
+      // into the canonical frame (see Window_field::local_window for the sign of sy)
       const FT n0 = L - t1, n1 = L - t0;
       t0 = n0;
       t1 = n1;
@@ -226,7 +231,7 @@ protected:
           return;
         kill_window(old);
       }
-      create_window(e, -1, FT(0), FT(0), sx, sy, sigma, into, source, false);
+      create_window(e, -1, FT(0), FT(0), sx, sy, sigma, from, source, false, filler);
       return;
     }
     const FT tiny = relative_tolerance_ * L;
@@ -311,8 +316,8 @@ protected:
       }
       const bool changed = remain_.front().lo != v.b0 || remain_.front().hi != v.b1;
       const FT vsx = v.sx, vsy = v.sy, vsigma = v.sigma;
-      const Index vinto = v.into_halfedge, vsource = v.source;
-      const bool vprocessed = v.processed;
+      const Index vfrom = v.from_halfedge, vsource = v.source;
+      const bool vprocessed = v.processed, vfiller = v.filler;
       v.b0 = remain_.front().lo;
       v.b1 = remain_.front().hi;
       if(changed) {
@@ -322,7 +327,8 @@ protected:
       }
       Index after = c.window;
       for(std::size_t i = 1; i < remain_.size(); ++i)
-        after = create_window(e, after, remain_[i].lo, remain_[i].hi, vsx, vsy, vsigma, vinto, vsource, vprocessed);
+        after = create_window(e, after, remain_[i].lo, remain_[i].hi, vsx, vsy, vsigma, vfrom, vsource, vprocessed,
+                              vfiller);
     }
     changes_win_.clear();
 
@@ -336,25 +342,26 @@ protected:
       }
       // A window split by a vertex meets itself again on the edges beyond: join the pieces of one
       // distance function instead of propagating them separately.
-      if(after >= 0 && same_function(windows_[std::size_t(after)], sx, sy, sigma, into) &&
+      if(after >= 0 && same_function(windows_[std::size_t(after)], sx, sy, sigma, from) &&
          windows_[std::size_t(after)].b1 == iv.lo) {
         Window& p = windows_[std::size_t(after)];
         p.b1 = iv.hi;
+        p.filler = p.filler && filler; // the same function: as good as the better of the two
         ++p.stamp;
         ++stats_.windows_merged;
         merge_with_next(after);
         propagation().push(after);
         continue;
       }
-      after = create_window(e, after, iv.lo, iv.hi, sx, sy, sigma, into, source, false);
+      after = create_window(e, after, iv.lo, iv.hi, sx, sy, sigma, from, source, false, filler);
       merge_with_next(after);
     }
   }
 
-  bool same_function(const Window& w, const FT& sx, const FT& sy, const FT& sigma, Index into) const
+  bool same_function(const Window& w, const FT& sx, const FT& sy, const FT& sigma, Index from) const
   {
     using std::abs;
-    if(w.processed || w.into_halfedge != into)
+    if(w.processed || w.from_halfedge != from)
       return false;
     const FT scale = abs(sx) + abs(sy) + sigma + (w.b1 - w.b0);
     const FT tol = FT(16) * relative_tolerance_ * scale;
@@ -369,12 +376,14 @@ protected:
     if(ni < 0)
       return;
     const Window& n = windows_[std::size_t(ni)];
-    if(n.b0 != w.b1 || !same_function(n, w.sx, w.sy, w.sigma, w.into_halfedge) || w.processed)
+    if(n.b0 != w.b1 || !same_function(n, w.sx, w.sy, w.sigma, w.from_halfedge) || w.processed)
       return;
     const FT b1 = n.b1;
+    const bool filler = w.filler && n.filler;
     kill_window(ni);
     Window& w2 = windows_[std::size_t(wi)];
     w2.b1 = b1;
+    w2.filler = filler;
     ++w2.stamp;
     ++stats_.windows_merged;
     propagation().push(wi);
@@ -401,9 +410,9 @@ protected:
         if(ni < 0)
           break;
         const Window& n = windows_[std::size_t(ni)];
-        if(n.processed || n.into_halfedge != w.into_halfedge || (side == 0 ? n.b0 != w.b1 : n.b1 != w.b0))
+        if(n.processed || n.from_halfedge != w.from_halfedge || (side == 0 ? n.b0 != w.b1 : n.b1 != w.b0))
           break;
-        const FT w_over_n = merge_deviation(w, n), n_over_w = merge_deviation(n, w);
+        const FT w_over_n = mergeable_over(w, n), n_over_w = mergeable_over(n, w);
         if(w_over_n < FT(0) && n_over_w < FT(0))
           break;
         const bool keep_w = !(n_over_w >= FT(0)) || (w_over_n >= FT(0) && !(n_over_w < w_over_n));
@@ -417,6 +426,7 @@ protected:
           w2.sy = absorbed.sy;
           w2.sigma = absorbed.sigma;
           w2.source = absorbed.source;
+          w2.filler = absorbed.filler;
         }
         ++stats_.windows_merged;
       }
@@ -428,6 +438,29 @@ protected:
   {
     return window_merge_deviation(w.sx, w.sy, w.sigma, n.sx, n.sy, n.sigma, n.b0, n.b1, merge_tolerance_,
                                   relative_tolerance_);
+  }
+
+  // merge_deviation(w, n) if w may also replace n. A *filler* w (rooted at a point where no shortest path bends: a
+  // side lobe at a gap inside an edge, the window of a flat vertex or of a border vertex of angle at most pi, or a
+  // descendant of one) is a real path, but one that the wavefront through that point undercuts wherever that
+  // wavefront can reach: it only fills in until a continuation of that wavefront arrives. It must not replace a
+  // window n of another kind whose function, extended over w's interval, undercuts w there. Before this rule,
+  // merging kept such fillers over the direct windows beside them, and on flat meshes (where the direct function is
+  // the exact distance everywhere and every other function lies above it) 1 to 550 vertices rose by up to 0.66
+  // tolerances above the straight-line distance in the window propagation (the manual, *Merged windows on flat
+  // meshes*). With it, the direct windows of a flat mesh are never replaced, and the result there is exact.
+  // Windows of saddles and of reflex border vertices are not fillers: the merges that make the approximation fast
+  // on curved meshes (a shadow window behind a saddle with the direct window beside it) are unchanged.
+  FT mergeable_over(const Window& w, const Window& n) const
+  {
+    const FT deviation = merge_deviation(w, n);
+    if(deviation < FT(0) || !w.filler || n.filler)
+      return deviation;
+    const FT dw = window_min_distance(w.b0, w.b1, w.sx, w.sy, w.sigma);
+    const FT undercut = window_min_difference(n.sx, n.sy, n.sigma, w.sx, w.sy, w.sigma, w.b0, w.b1);
+    if(undercut + relative_tolerance_ * (dw + merge_tolerance_) < FT(0))
+      return FT(-1);
+    return deviation;
   }
 
   static void append_interval(std::vector<Interval>& list, const FT& lo, const FT& hi)

@@ -39,6 +39,10 @@ public:
 
   explicit Window_field(const Mesh& mesh) : mesh_(mesh)
   {
+    if(!mesh_.star_begin.empty()) {
+      star_begin_ = mesh_.star_begin.data();
+      star_ = mesh_.star.data();
+    }
     // The sentinel of "no distance yet": large, but far from overflowing when a few lengths are added.
     unreached_ = FT(std::numeric_limits<double>::max() / 16);
     if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
@@ -56,11 +60,12 @@ public:
   Index vertex_source(Index v) const { return vertex_source_[std::size_t(v)]; }
 
   // A window of the stored field, as the queries read it: the interval and the pseudo-source in the frame of
-  // the edge's canonical halfedge, the halfedge whose face it propagates into (-1 if none) and its source.
+  // the edge's canonical halfedge, the halfedge of the face on its pseudo-source's side (it propagates into the
+  // faces of the other halfedges of the edge; -1 if none) and its source.
   struct Field_window_view
   {
     FT b0, b1, sx, sy, sigma;
-    Index into_halfedge;
+    Index from_halfedge;
     Index source;
   };
 
@@ -77,9 +82,8 @@ public:
     for(Index k = 0; k < field_count_[std::size_t(e)]; ++k) {
       const Field_window& w = field_windows_[std::size_t(first + k)];
       const std::uint32_t tag = field_tags_[std::size_t(first + k)];
-      const std::uint32_t side = tag & 3u;
-      const Index into = side == 0 ? h : (side == 1 ? mesh_.he[std::size_t(h)].twin : Index(-1));
-      f(Field_window_view{w.b0, w.b1, w.sx, w.sy, w.sigma, into, Index(tag >> 2) - 1});
+      const Index from = halfedge_of_rank(h, tag & field_rank_mask);
+      f(Field_window_view{w.b0, w.b1, w.sx, w.sy, w.sigma, from, Index(tag >> field_rank_bits) - 1});
     }
   }
 
@@ -172,10 +176,7 @@ public:
         } else {
           at_vertex = -1;
           on_halfedge = g;
-          {
-            const Index e = mesh_.he[std::size_t(g)].edge;
-            visited.add_edge_point(e, g == mesh_.edge_halfedge[std::size_t(e)] ? t : len - t);
-          }
+          visited.add_edge_point(mesh_.he[std::size_t(g)].edge, runs_like_canonical(g) ? t : len - t);
           const FT r = t / len;
           emit(edge_node(g, r));
           const Index fg = Mesh::face_of(g);
@@ -199,19 +200,75 @@ public:
   }
 
 protected:
-  // The window seen from halfedge h (its edge's canonical halfedge or the twin, whose frame is mirrored).
-  Local_window<FT> local_window(const Window& w, Index h) const
+  // Whether h runs in the direction of its edge's canonical halfedge, whose frame the windows use (on an oriented
+  // manifold edge: whether h is that halfedge).
+  bool runs_like_canonical(Index h) const
   {
-    return local_window(w.b0, w.b1, w.sx, w.sy, w.sigma, h == mesh_.edge_halfedge[std::size_t(w.edge)], h);
+    const Geodesic_halfedge<FT>& r = mesh_.he[std::size_t(h)];
+    const Index hc = mesh_.edge_halfedge[std::size_t(r.edge)];
+    if(h == hc)
+      return true;
+    if(r.twin >= 0)
+      return false; // the twin runs the other way
+    return r.source == mesh_.he[std::size_t(hc)].source; // a halfedge of a non-manifold or reversed edge
   }
 
-  Local_window<FT> local_window(const FT& b0, const FT& b1, const FT& sx, const FT& sy, const FT& sigma,
-                                bool h_is_canonical, Index h) const
+  // Whether a window with this from halfedge propagates into the face of h (a halfedge of its edge).
+  static bool propagates_into(Index from, Index h) { return from >= 0 && from != h; }
+
+  // The window seen from halfedge h of its edge: for propagating into h's face (h is not its from halfedge), the
+  // pseudo-source below the edge in h's frame; from its from halfedge's face, above.
+  Local_window<FT> local_window(const Window& w, Index h) const
   {
-    if(h_is_canonical)
-      return Local_window<FT>{b0, b1, sx, sy, sigma};
-    const FT L = mesh_.he[std::size_t(h)].length;
-    return Local_window<FT>{L - b1, L - b0, L - sx, -sy, sigma};
+    return local_window(w.b0, w.b1, w.sx, w.sy, w.sigma, w.from_halfedge, h);
+  }
+
+  // The stored window (b0, b1, sx, sy) is in the canonical frame, with sy of the sign it has when its from
+  // halfedge's frame is turned into the canonical one (x -> L - x, y -> -y if they run opposite ways; nothing if
+  // they run the same way). Seen from h, x follows h's direction and sy is the height of the pseudo-source on the
+  // from side: + in the from face's own frame, - in every other face, which is unfolded opposite it. On an
+  // oriented manifold edge this is the mirror image x -> L - x, y -> -y between the two halfedges, as it has
+  // always been (the same numbers, bit for bit); only halfedges of non-manifold and reversed edges need `from`.
+  Local_window<FT> local_window(const FT& b0, const FT& b1, const FT& sx, const FT& sy, const FT& sigma, Index from,
+                                Index h) const
+  {
+    const bool h_like = runs_like_canonical(h);
+    FT local_sy = h_like ? sy : -sy;
+    const Geodesic_halfedge<FT>& r = mesh_.he[std::size_t(h)];
+    if(from >= 0 && r.twin < 0 && r.radial != h) {
+      const FT sy_from = runs_like_canonical(from) ? sy : -sy;
+      local_sy = from == h ? sy_from : -sy_from;
+    }
+    if(h_like)
+      return Local_window<FT>{b0, b1, sx, local_sy, sigma};
+    const FT L = r.length;
+    return Local_window<FT>{L - b1, L - b0, L - sx, local_sy, sigma};
+  }
+
+  // The stored field tags each window with its source and the position of its from halfedge in its edge's cycle
+  // (0: the canonical halfedge), `no_rank` when it propagates nowhere.
+  static constexpr unsigned field_rank_bits = 5;
+  static constexpr std::uint32_t field_rank_mask = (1u << field_rank_bits) - 1;
+  static constexpr std::uint32_t no_rank = field_rank_mask; // build_geodesic_mesh.h: at most 31 faces per edge
+
+  std::uint32_t rank_of_halfedge(Index hc, Index g) const
+  {
+    if(g < 0)
+      return no_rank;
+    std::uint32_t rank = 0;
+    for(Index x = hc; x != g; x = mesh_.he[std::size_t(x)].radial)
+      ++rank;
+    return rank;
+  }
+
+  Index halfedge_of_rank(Index hc, std::uint32_t rank) const
+  {
+    if(rank == no_rank)
+      return -1;
+    Index x = hc;
+    for(std::uint32_t k = 0; k < rank; ++k)
+      x = mesh_.he[std::size_t(x)].radial;
+    return x;
   }
 
   // ------------------------------------------------------------------------------------------------
@@ -247,12 +304,12 @@ protected:
     Index n = 0;
     for(Index wi = edge_first_[e]; wi >= 0; wi = windows_[std::size_t(wi)].next, ++n) {
       const Window& w = windows_[std::size_t(wi)];
-      if(w.source < -1 || w.source >= Index(1 << 29))
+      if(w.source < -1 || w.source >= Index(1 << (32 - field_rank_bits)) - 1)
         throw std::length_error("CGAL::Polyhedral_geodesics_3: too many sources for the stored field");
-      const std::uint32_t side = w.into_halfedge == h ? 0u : (w.into_halfedge < 0 ? 2u : 1u);
       const std::size_t i = field_windows_.emplace_back();
       field_windows_[i] = Field_window{w.b0, w.b1, w.sx, w.sy, w.sigma};
-      field_tags_[field_tags_.emplace_back()] = (std::uint32_t(w.source + 1) << 2) | side;
+      field_tags_[field_tags_.emplace_back()] =
+          (std::uint32_t(w.source + 1) << field_rank_bits) | rank_of_halfedge(h, w.from_halfedge);
     }
     field_first_[e] = n > 0 ? first : Index(-1);
     field_count_[e] = n;
@@ -298,10 +355,14 @@ protected:
   // ------------------------------------------------------------------------------------------------
   // Vertex stars (for vertex sources and path tracing)
 
+  // The mesh's vertex stars (built with it); a mesh made otherwise gets its own here.
   void ensure_vertex_star() const
   {
-    if(star_begin_.empty())
-      build_vertex_star(mesh_, star_begin_, star_);
+    if(star_begin_ != nullptr || mesh_.number_of_vertices == 0)
+      return;
+    build_vertex_star(mesh_, own_star_begin_, own_star_);
+    star_begin_ = own_star_begin_.data();
+    star_ = own_star_.data();
   }
 
   // ------------------------------------------------------------------------------------------------
@@ -331,7 +392,8 @@ protected:
     void add_vertex(const std::vector<Index>& cluster) { vertices.insert(vertices.end(), cluster.begin(), cluster.end()); }
     void add_edge_point(Index e, const FT& x) { edge_points.push_back({e, x}); }
 
-    bool allows(const Candidate& c, const Mesh& mesh) const
+    template <class Field>
+    bool allows(const Candidate& c, const Mesh& mesh, const Field& field) const
     {
       Index v = -1;
       if(c.kind == Candidate::VERTEX)
@@ -342,7 +404,7 @@ protected:
         else if(!(c.t < len)) v = mesh.target(c.halfedge);
         else {
           const Index e = mesh.he[std::size_t(c.halfedge)].edge;
-          const FT x = c.halfedge == mesh.edge_halfedge[std::size_t(e)] ? c.t : len - c.t;
+          const FT x = field.runs_like_canonical(c.halfedge) ? c.t : len - c.t;
           const FT tol = FT(1e-12) * len;
           for(const auto& p : edge_points)
             if(p.first == e && !(p.second - x > tol) && !(x - p.second > tol))
@@ -363,7 +425,7 @@ protected:
   {
     Candidate best;
     auto offer = [&](const Candidate& c) {
-      if(visited != nullptr && !visited->allows(c, mesh_))
+      if(visited != nullptr && !visited->allows(c, mesh_, *this))
         return;
       if(best.kind == Candidate::NONE || c.value < best.value)
         best = c;
@@ -405,10 +467,9 @@ protected:
         continue;
       const Point_2_ft<FT> p = point_in_halfedge_frame(f, b, k);
       const bool on_edge = b[std::size_t((k + 2) % 3)] == FT(0);
-      const bool g_is_canonical = g == mesh_.edge_halfedge[std::size_t(e)];
       for_each_window_on_edge(e, [&](const Field_window_view& w) {
-        const Local_window<FT> lw = local_window(w.b0, w.b1, w.sx, w.sy, w.sigma, g_is_canonical, g);
-        if(w.into_halfedge == g) {
+        const Local_window<FT> lw = local_window(w.b0, w.b1, w.sx, w.sy, w.sigma, w.from_halfedge, g);
+        if(propagates_into(w.from_halfedge, g)) {
           // the point sees the window from its far side: straight to S if the segment crosses it
           FT x;
           const FT den = p.y - lw.sy;
@@ -495,16 +556,20 @@ protected:
     return out;
   }
 
-  // Adds the point at ratio r along halfedge g, seen from the face of g's twin.
+  // Adds the point at ratio r along halfedge g, seen from the faces of the other halfedges of g's edge.
   void add_twin_incarnation(Index g, const FT& r, std::vector<std::pair<Index, std::array<FT, 3>>>& where) const
   {
-    const Index tw = mesh_.he[std::size_t(g)].twin;
-    if(tw < 0)
-      return;
-    std::array<FT, 3> b = {FT(0), FT(0), FT(0)};
-    b[std::size_t(tw % 3)] = r;                       // source(tw) == target(g)
-    b[std::size_t((tw % 3 + 1) % 3)] = FT(1) - r;     // target(tw) == source(g)
-    where.push_back({Mesh::face_of(tw), b});
+    mesh_.for_each_other_halfedge(g, [&](Index tw) {
+      std::array<FT, 3> b = {FT(0), FT(0), FT(0)};
+      if(mesh_.same_direction(tw, g)) {
+        b[std::size_t(tw % 3)] = FT(1) - r;
+        b[std::size_t((tw % 3 + 1) % 3)] = r;
+      } else {
+        b[std::size_t(tw % 3)] = r;                   // source(tw) == target(g)
+        b[std::size_t((tw % 3 + 1) % 3)] = FT(1) - r; // target(tw) == source(g)
+      }
+      where.push_back({Mesh::face_of(tw), b});
+    });
   }
 
   Path_node vertex_node(Index v) const { return vertex_path_node(mesh_, v); }
@@ -526,7 +591,9 @@ protected:
   std::vector<FT> dist_;
   std::vector<Index> vertex_source_;
   std::vector<Face_source> face_sources_;
-  mutable std::vector<Index> star_begin_, star_;
+  mutable const Index* star_begin_ = nullptr; // the vertex stars: the mesh's, or own_* for a mesh without them
+  mutable const Index* star_ = nullptr;
+  mutable std::vector<Index> own_star_begin_, own_star_;
   FT unreached_;
   FT relative_tolerance_;
   FT limit_ = FT(0);
