@@ -67,29 +67,35 @@ VM::Surface_plane_options_3 blob_planes(std::uint64_t seed)
   return o;
 }
 
-// One measured path: `run(threads)` returns a fingerprint of its result (compared across thread counts) and
-// writes the CPU seconds of its parallel stages at that run into `parallel_cpu` (used at one thread).
+// The CPU and wall times of the parallel stage of a run (between the first and the last progress call of the stage).
+struct Stage_time
+{
+  double cpu = 0, wall = 0;
+};
+
+// One measured path: `run(threads, stage)` returns a fingerprint of its result (compared across thread counts) and
+// the times of its parallel stage in `stage`.
 struct Path
 {
   std::string name, size;
-  std::function<std::vector<double>(std::size_t threads, double& parallel_cpu)> run;
+  std::function<std::vector<double>(std::size_t threads, Stage_time& stage)> run;
 };
 
-// The CPU time between the first and the last progress call of a stage (the parallel part of a call).
 struct Stage_clock
 {
   std::string stage;
-  double first = -1, last = -1;
+  double first = -1, last = -1, first_wall = -1, last_wall = -1;
   bool operator()(const char* s, double)
   {
     if(stage == s) {
-      const double c = mdcs_bench::cpu_seconds();
-      if(first < 0) first = c;
+      const double c = mdcs_bench::cpu_seconds(), w = mdcs_bench::now_seconds();
+      if(first < 0) { first = c; first_wall = w; }
       last = c;
+      last_wall = w;
     }
     return true;
   }
-  double span() const { return first < 0 ? 0 : last - first; }
+  Stage_time time() const { return first < 0 ? Stage_time() : Stage_time{last - first, last_wall - first_wall}; }
 };
 
 } // namespace
@@ -140,11 +146,11 @@ int main(int argc, char** argv)
     A.reset(new VM::Plane_arrangement_3(VM::surface_planes_3(P, std::size_t(planes), blob_planes(3))));
     const std::string size = std::to_string(A->number_of_facets()) + " facets";
     const auto weights_path = [&, size](const std::string& name, auto functional, int level) {
-      paths.push_back({name, size, [&P, &A, functional, level](std::size_t t, double& parallel_cpu) {
+      paths.push_back({name, size, [&P, &A, functional, level](std::size_t t, Stage_time& stage) {
                          Stage_clock clock{"weights"};
                          const std::vector<double> w =
                            VM::surface_facet_weights_3<CGAL::Parallel_tag>(*A, P, functional, level, t, std::ref(clock));
-                         parallel_cpu = clock.span();
+                         stage = clock.time();
                          return w;
                        }});
     };
@@ -157,39 +163,39 @@ int main(int argc, char** argv)
   const int independent = quick ? 2 : 4;
   if(want("refine"))
     paths.push_back({"refine-" + std::to_string(independent) + "-runs", std::to_string(n_round) + " planes",
-                     [&](std::size_t t, double& parallel_cpu) {
+                     [&](std::size_t t, Stage_time& stage) {
                        VM::Surface_plane_options_3 o = blob_planes(7);
                        o.threads = t;
                        // The runs end when the refinement reports fraction runs / (runs + 1).
-                       double start = -1, end = -1;
+                       double start = -1, end = -1, start_wall = -1, end_wall = -1;
                        const VM::Surface_refinement_result_3 r = VM::refine_surface_3(
                          P, G, n_round, independent, o, 0.05, 1, CGAL::Min_cut::Default_max_flow_engine(),
                          [&](const char*, double f) {
-                           const double c = mdcs_bench::cpu_seconds();
-                           if(start < 0) start = c;
-                           if(std::abs(f - double(independent) / double(independent + 1)) < 1e-12 && end < 0) end = c;
+                           const double c = mdcs_bench::cpu_seconds(), w = mdcs_bench::now_seconds();
+                           if(start < 0) { start = c; start_wall = w; }
+                           if(std::abs(f - double(independent) / double(independent + 1)) < 1e-12 && end < 0) { end = c; end_wall = w; }
                            return true;
                          });
-                       parallel_cpu = end - start;
+                       stage = Stage_time{end - start, end_wall - start_wall};
                        std::vector<double> out = r.run_energies;
                        out.push_back(r.surface.energy);
                        return out;
                      }});
   if(want("restarts"))
     paths.push_back({"restarts-" + std::to_string(independent), std::to_string(n_round) + " planes x 3 rounds",
-                     [&](std::size_t t, double& parallel_cpu) {
+                     [&](std::size_t t, Stage_time& stage) {
                        VM::Surface_plane_options_3 o = blob_planes(11);
                        o.threads = t;
                        Stage_clock clock{"plane selection restarts"};
                        const VM::Plane_selection_multistart_result_3 r =
                          VM::select_planes_multistart_3(P, G, n_round, 3, std::size_t(independent), o, 1,
                                                         CGAL::Min_cut::Default_max_flow_engine(), std::ref(clock));
-                       parallel_cpu = clock.span();
+                       stage = clock.time();
                        return r.restart_energies;
                      }});
   if(want("basin"))
     paths.push_back({"basin-search", std::to_string(n_round) + " planes x 2 rounds, tilings 3,4",
-                     [&](std::size_t t, double& parallel_cpu) {
+                     [&](std::size_t t, Stage_time& stage) {
                        VM::Surface_plane_options_3 o = blob_planes(2);
                        o.threads = t;
                        VM::Surface_basin_search_options_3 so;
@@ -199,11 +205,11 @@ int main(int argc, char** argv)
                        Stage_clock clock{"basin search"};
                        const VM::Relaxed_plane_selection_result_3 r =
                          VM::select_planes_relaxed_3(P, G, n_round, 2, o, so, CGAL::Min_cut::Default_max_flow_engine(), std::ref(clock));
-                       parallel_cpu = clock.span();
+                       stage = clock.time();
                        return std::vector<double>{r.search.relaxed.energy, double(r.search.moves), double(r.search.improvements)};
                      }});
   if(want("tangent"))
-    paths.push_back({"tangent-refinement", std::to_string(n_round) + " planes x 3 rounds", [&](std::size_t t, double& parallel_cpu) {
+    paths.push_back({"tangent-refinement", std::to_string(n_round) + " planes x 3 rounds", [&](std::size_t t, Stage_time& stage) {
                        const double a = 1.2;
                        VM::Surface_problem_3 S;
                        S.domain = CGAL::Bbox_2(-a, -a, a, a);
@@ -219,37 +225,39 @@ int main(int argc, char** argv)
                        to.rounds = 3;
                        to.threads = t;
                        // The weights of each round are the parallel stage; the fits are too small to time apart.
-                       parallel_cpu = 0;
+                       stage = Stage_time();
                        const VM::Tangent_refinement_result_3 r =
                          VM::refine_surface_by_tangent_planes_3(S, VM::Area_functional_3(), std::size_t(n_round * 2), to, o);
                        return r.round_energies;
                      }});
 
-  mdcs_bench::Table table({"path", "size", "threads", "wall_s", "cpu_s", "speedup", "efficiency", "serial_fraction",
-                           "projected_16_threads_s", "identical", "load"});
+  mdcs_bench::Table table({"path", "size", "threads", "wall_s", "cpu_s", "speedup", "efficiency", "stage_wall_s",
+                           "stage_speedup", "serial_fraction", "projected_16_threads_s", "identical", "load"});
   for(const Path& p : paths) {
-    std::map<std::size_t, std::vector<double>> wall, cpu, par;
+    std::map<std::size_t, std::vector<double>> wall, cpu, par, par_wall;
     std::map<std::size_t, std::vector<double>> fingerprint;
     for(int r = 0; r < runs; ++r)
       for(std::size_t t : threads) {
-        double parallel_cpu = 0;
+        Stage_time stage;
         const double t0 = mdcs_bench::now_seconds(), c0 = mdcs_bench::cpu_seconds();
-        std::vector<double> f = p.run(t, parallel_cpu);
+        std::vector<double> f = p.run(t, stage);
         wall[t].push_back(mdcs_bench::now_seconds() - t0);
         cpu[t].push_back(mdcs_bench::cpu_seconds() - c0);
-        par[t].push_back(parallel_cpu);
+        par[t].push_back(stage.cpu);
+        par_wall[t].push_back(stage.wall);
         if(r == 0) fingerprint[t] = std::move(f);
       }
     const std::size_t t1 = threads.front();
     const double w1 = mdcs_bench::median(wall[t1]), c1 = mdcs_bench::median(cpu[t1]);
     const double serial = p.name == "tangent-refinement" ? std::numeric_limits<double>::quiet_NaN()
                                                          : std::max(0.0, c1 - mdcs_bench::median(par[t1]));
+    const double sw1 = mdcs_bench::median(par_wall[t1]);
     for(std::size_t t : threads) {
-      const double w = mdcs_bench::median(wall[t]);
+      const double w = mdcs_bench::median(wall[t]), sw = mdcs_bench::median(par_wall[t]);
       const bool identical = fingerprint[t] == fingerprint[t1];
       table.add_row({p.name, p.size, std::to_string(t), fmt(w), fmt(mdcs_bench::median(cpu[t])), fmt(w1 / w),
-                     fmt(w1 / w / double(t)), fmt(serial / c1), fmt(serial + (c1 - serial) / 16), identical ? "yes" : "NO",
-                     load_line()});
+                     fmt(w1 / w / double(t)), sw > 0 ? fmt(sw) : "-", sw > 0 ? fmt(sw1 / sw) : "-", fmt(serial / c1),
+                     fmt(serial + (c1 - serial) / 16), identical ? "yes" : "NO", load_line()});
       std::printf("  %-26s %zu thread(s): %8.3f s, speed-up %.3f%s\n", p.name.c_str(), t, w, w1 / w,
                   identical ? "" : "  RESULTS DIFFER");
       std::fflush(stdout);
@@ -257,7 +265,9 @@ int main(int argc, char** argv)
   }
   std::printf("\n");
   table.print();
-  std::printf("\nspeedup = wall(1 thread) / wall(t); efficiency = speedup / t; serial_fraction = CPU time outside the "
+  std::printf("\nspeedup = wall(1 thread) / wall(t); efficiency = speedup / t; stage_wall_s, stage_speedup: the same "
+              "for the parallel stage alone (weights: the weights; refine: the independent runs; restarts: all of it; "
+              "basin: the search moves); serial_fraction = CPU time outside the "
               "parallel stages / total CPU time at one thread (weights: outside the \"weights\" stage; refine: the "
               "refined solve; restarts: the choice of the best; basin: everything but the search moves, i.e. the plane "
               "selection's builds and cuts; tangent: not split); projected_16_threads_s = Amdahl's law from it, a "
