@@ -390,3 +390,103 @@ TEST_CASE("distance matrix files: .npy and Matrix Market round trips", "[geodesi
   std::stringstream garbage("not a matrix");
   CHECK_THROWS_AS(IO::read_matrix_market(garbage), std::runtime_error);
 }
+
+TEST_CASE("distance matrices on a prepared triangle soup with a non-manifold edge", "[geodesics][matrix][local][parallel]")
+{
+  // Three sheets of a 12 x 8 grid sharing the edge on the z axis (the middle one oriented the other way).
+  typedef PG::Geodesic_surface_3<PG::Triangle_soup> Surface;
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  const std::size_t nr = 12, nz = 8;
+  for(std::size_t j = 0; j <= nz; ++j) points.push_back({0, 0, double(j) / double(nz)});
+  for(int s = 0; s < 3; ++s) {
+    const double phi = 2 * 3.14159265358979323846 * s / 3 + 0.1;
+    const std::size_t first = points.size();
+    for(std::size_t i = 1; i <= nr; ++i)
+      for(std::size_t j = 0; j <= nz; ++j)
+        points.push_back({double(i) / double(nr) * std::cos(phi), double(i) / double(nr) * std::sin(phi), double(j) / double(nz)});
+    auto id = [&](std::size_t i, std::size_t j) { return i == 0 ? j : first + (i - 1) * (nz + 1) + j; };
+    for(std::size_t i = 0; i < nr; ++i)
+      for(std::size_t j = 0; j < nz; ++j) {
+        std::array<std::size_t, 3> t1 = {id(i, j), id(i + 1, j), id(i + 1, j + 1)}, t2 = {id(i, j), id(i + 1, j + 1), id(i, j + 1)};
+        if(s == 1) {
+          std::swap(t1[1], t1[2]);
+          std::swap(t2[1], t2[2]);
+        }
+        triangles.push_back(t1);
+        triangles.push_back(t2);
+      }
+  }
+  const Surface surface(points, triangles);
+  REQUIRE(surface.number_of_nonmanifold_edges() > 0);
+  const double r = 0.35;
+  std::vector<std::size_t> sources;
+  for(std::size_t v = 0; v < points.size(); v += 7) sources.push_back(v);
+  for(PG::Geodesic_method method : {PG::Geodesic_method::exact, PG::Geodesic_method::dijkstra}) {
+    INFO(PG::geodesic_method_name(method));
+    std::vector<std::vector<std::pair<std::uint32_t, double>>> rows(sources.size());
+    for(std::size_t t : thread_counts) {
+      std::vector<std::vector<std::pair<std::uint32_t, double>>> got(sources.size());
+      PG::local_geodesic_distance_rows<CGAL::Parallel_tag>(
+        surface, sources,
+        [&](std::size_t i, const std::vector<std::uint32_t>& c, const std::vector<double>& d) {
+          for(std::size_t k = 0; k < c.size(); ++k) got[i].push_back({c[k], d[k]});
+        },
+        options_for(method, t, r));
+      if(t == 1) rows = got;
+      CHECK(got == rows);
+    }
+    // Against the class on the same surface, on the whole soup, stopped at r.
+    std::size_t missing = 0, extra = 0, differ = 0, pairs = 0;
+    for(std::size_t i = 0; i < sources.size(); ++i) {
+      std::vector<double> whole(points.size(), inf);
+      const auto m = PG::Geodesic_memory_mode::distances_only;
+      auto run = [&](auto& g) {
+        g.set_distance_limit(r);
+        g.add_source(sources[i]);
+        for(std::size_t v = 0; v < points.size(); ++v) whole[v] = g.distance(v);
+      };
+      if(method == PG::Geodesic_method::exact) {
+        PG::Exact_geodesic_distances_3<PG::Triangle_soup> g(surface, m);
+        run(g);
+      } else {
+        PG::Dijkstra_geodesic_distances_3<PG::Triangle_soup> g(surface, m);
+        run(g);
+      }
+      std::vector<double> local(points.size(), inf);
+      for(const auto& e : rows[i]) local[e.first] = e.second;
+      for(std::size_t v = 0; v < points.size(); ++v) {
+        const bool in_whole = whole[v] <= r, in_local = local[v] <= r;
+        const bool borderline = std::abs((in_whole ? whole[v] : local[v]) - r) <= 1e-12 * r;
+        if(in_whole && !in_local && !borderline) ++missing;
+        if(!in_whole && in_local && !borderline) ++extra;
+        if(in_whole && in_local) {
+          ++pairs;
+          if(std::abs(whole[v] - local[v]) > 1e-12 * std::max(whole[v], 1e-300)) ++differ;
+        }
+      }
+    }
+    CHECK(pairs > 10 * sources.size());
+    CHECK(missing == 0);
+    CHECK(extra == 0);
+    CHECK(differ == 0);
+  }
+  // Dense rows on the surface equal the class's rows, bit for bit.
+  std::vector<std::vector<double>> dense;
+  PG::geodesic_distance_rows<CGAL::Parallel_tag>(surface, sources, [&](std::size_t, const std::vector<double>& row) {
+    dense.push_back(row);
+  }, options_for(PG::Geodesic_method::exact, 2));
+  PG::Exact_geodesic_distances_3<PG::Triangle_soup> g(surface, PG::Geodesic_memory_mode::distances_only);
+  g.add_source(sources[3]);
+  bool same = dense.size() == sources.size();
+  for(std::size_t v = 0; same && v < points.size(); ++v) same = dense[3][v] == g.distance(v);
+  CHECK(same);
+  // Flat-exact and fast marching refuse such surfaces, as their classes do.
+  auto ignore = [](std::size_t, const std::vector<double>&) {};
+  CHECK_THROWS_AS(PG::geodesic_distance_rows<CGAL::Parallel_tag>(surface, sources, ignore,
+                                                                 options_for(PG::Geodesic_method::fast_marching, 2)),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(PG::geodesic_distance_rows<CGAL::Parallel_tag>(surface, sources, ignore,
+                                                                 options_for(PG::Geodesic_method::flat_exact, 2, r)),
+                  std::invalid_argument);
+}

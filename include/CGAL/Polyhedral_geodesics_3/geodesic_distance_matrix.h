@@ -11,6 +11,7 @@
 
 #include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
+#include <CGAL/Polyhedral_geodesics_3/Geodesic_surface_3.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_matrix_engines.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/local_geodesic_submesh.h>
@@ -81,21 +82,10 @@ struct Geodesic_sparse_matrix
 
 namespace internal {
 
-// The compact mesh of the matrix functions and the vertex stars of its neighbourhoods, built once, read by every
-// thread.
+// The compact mesh of the matrix functions (that of a Geodesic_surface_3), read by every thread.
 struct Matrix_surface
 {
-  Matrix_mesh mesh;
-  std::vector<Matrix_index> star_begin, star;
-
-  template <class TriangleMesh, class VertexPointMap>
-  Matrix_surface(const TriangleMesh& tm, VertexPointMap vpm)
-  {
-    std::vector<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> halfedge_of;
-    build_geodesic_mesh(tm, vpm, CGAL::get_initialized_vertex_index_map(tm), CGAL::get_initialized_face_index_map(tm),
-                        mesh, halfedge_of);
-    build_vertex_star(mesh, star_begin, star);
-  }
+  const Matrix_mesh& mesh;
 };
 
 inline void check_matrix_options(const Geodesic_matrix_options& o, bool sparse)
@@ -121,14 +111,14 @@ class Local_row_solver
 {
 public:
   Local_row_solver(const Matrix_surface& s, const Geodesic_matrix_options& o)
-    : s_(s), o_(o), sub_(s.mesh, s.star_begin, s.star), radius_(neighbourhood_radius(o.method, o.max_distance))
+    : s_(s), o_(o), sub_(s.mesh), radius_(neighbourhood_radius(o.method, o.max_distance))
   {}
 
   void solve(Matrix_index source, std::vector<std::uint32_t>& columns, std::vector<double>& values)
   {
     columns.clear();
     values.clear();
-    if(s_.star_begin[std::size_t(source)] == s_.star_begin[std::size_t(source) + 1]) { // an isolated vertex
+    if(s_.mesh.star_begin[std::size_t(source)] == s_.mesh.star_begin[std::size_t(source) + 1]) { // an isolated vertex
       columns.push_back(std::uint32_t(source));
       values.push_back(0);
       return;
@@ -241,14 +231,14 @@ void sparse_rows(const Matrix_surface& s, const std::vector<Matrix_index>& sourc
   reporter.finish();
 }
 
-template <class TriangleMesh, class VertexRange>
-std::vector<Matrix_index> vertex_indices(const TriangleMesh& tm, const VertexRange& vertices_range, const char* what)
+// The compact indices of vertex descriptors of a surface; the descriptors must be vertices of it.
+template <class Surface, class VertexRange>
+std::vector<Matrix_index> vertex_indices(const Surface& surface, const VertexRange& vertices_range, const char* what)
 {
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
-  const std::size_t nv = num_vertices(tm);
+  const std::size_t nv = surface.number_of_vertices();
   std::vector<Matrix_index> out;
   for(auto v : vertices_range) {
-    const std::size_t i = std::size_t(get(vim, v));
+    const std::size_t i = std::size_t(surface.vertex_index(v));
     if(i >= nv)
       throw std::invalid_argument(std::string("CGAL::Polyhedral_geodesics_3: distance matrix: a ") + what +
                                   " is not a vertex of the mesh");
@@ -257,13 +247,23 @@ std::vector<Matrix_index> vertex_indices(const TriangleMesh& tm, const VertexRan
   return out;
 }
 
-template <class TriangleMesh, class NamedParameters>
-Matrix_surface make_matrix_surface(const TriangleMesh& tm, const NamedParameters& np)
+// Flat-exact and fast marching follow `twin` alone (as their classes, they refuse non-manifold and reversed edges).
+inline void check_matrix_surface(const Matrix_mesh& mesh, Geodesic_method method)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return Matrix_surface(tm, choose_parameter(get_parameter(np, internal_np::vertex_point),
-                                             get_const_property_map(CGAL::vertex_point, tm)));
+  if(!mesh.has_special_edges() || (method != Geodesic_method::flat_exact && method != Geodesic_method::fast_marching))
+    return;
+  throw std::invalid_argument(std::string("CGAL::Polyhedral_geodesics_3: distance matrix with the method ") +
+                              geodesic_method_name(method) + ": the surface has " +
+                              std::to_string(mesh.number_of_nonmanifold_edges) + " edges of three or more faces and " +
+                              std::to_string(mesh.number_of_reversed_edges) +
+                              " edges whose two faces are oriented against each other, which this method does not "
+                              "support (the exact, merged-window and Dijkstra methods do)");
+}
+
+template <class TriangleMesh, class NamedParameters>
+Geodesic_surface_3<TriangleMesh> make_matrix_surface(const TriangleMesh& tm, const NamedParameters& np)
+{
+  return Geodesic_surface_3<TriangleMesh>(tm, np);
 }
 
 // The symmetric matrix of a square directed one (see symmetric_local_geodesic_distance_matrix()).
@@ -326,89 +326,104 @@ inline Geodesic_sparse_matrix symmetrize_by_minimum(const Geodesic_sparse_matrix
   return s;
 }
 
+// The dense rows from indices (see geodesic_distance_rows()); `targets` null: every vertex.
+template <class ConcurrencyTag, class RowOutput, class Progress>
+void dense_rows_on(const Matrix_mesh& mesh, const std::vector<Matrix_index>& sources,
+                   const std::vector<Matrix_index>* targets, RowOutput& output, const Geodesic_matrix_options& options,
+                   Progress& progress)
+{
+  check_matrix_options(options, false);
+  check_matrix_surface(mesh, options.method);
+  const Matrix_surface surface{mesh};
+  const std::size_t threads = CGAL::MDCS::effective_threads<ConcurrencyTag>(options.threads);
+  with_matrix_engine(options.method, [&](auto tag) {
+    dense_rows<typename decltype(tag)::type>(surface, sources, targets, output, options, threads, progress);
+  });
+}
+
+template <class ConcurrencyTag, class RowOutput, class Progress>
+void sparse_rows_on(const Matrix_mesh& mesh, const std::vector<Matrix_index>& sources, RowOutput& output,
+                    const Geodesic_matrix_options& options, Progress& progress)
+{
+  check_matrix_options(options, true);
+  check_matrix_surface(mesh, options.method);
+  const Matrix_surface surface{mesh};
+  const std::size_t threads = CGAL::MDCS::effective_threads<ConcurrencyTag>(options.threads);
+  with_matrix_engine(options.method, [&](auto tag) {
+    sparse_rows<typename decltype(tag)::type>(surface, sources, output, options, threads, progress);
+  });
+}
+
+template <class ConcurrencyTag, class Progress>
+Geodesic_sparse_matrix local_matrix_on(const Matrix_mesh& mesh, const Geodesic_matrix_options& options, Progress& progress)
+{
+  Geodesic_sparse_matrix m;
+  m.rows = m.columns = mesh.number_of_vertices;
+  std::vector<Matrix_index> all(m.rows);
+  for(std::size_t v = 0; v < m.rows; ++v) all[v] = Matrix_index(v);
+  auto append = [&](std::size_t, const std::vector<std::uint32_t>& columns, const std::vector<double>& values) {
+    m.column.insert(m.column.end(), columns.begin(), columns.end());
+    m.value.insert(m.value.end(), values.begin(), values.end());
+    m.row_begin.push_back(m.column.size());
+  };
+  sparse_rows_on<ConcurrencyTag>(mesh, all, append, options, progress);
+  return m;
+}
+
 } // namespace internal
+
+/// \name Distance matrices on a prepared surface
+/// The functions below also take a `Geodesic_surface_3` (any triangle mesh or triangle soup, built once and shared:
+/// see that class) instead of a mesh; sources and targets are then its vertex descriptors (soups: vertex indices).
+/// @{
 
 /*!
   \ingroup PkgPolyhedralGeodesics3Ref
-  \brief Dense rows of geodesic distances: for each vertex `sources[i]`, the distance to every vertex of `tm` (or to
-  every vertex of `targets`, in that order) by `options.method`, delivered to `output(i, row)` (`row`: a
-  `const std::vector<double>&`, +infinity where unreachable or beyond `options.max_distance`) in the order of the
-  sources, one row at a time.
+  \brief Dense rows of geodesic distances: for each vertex `sources[i]`, the distance to every vertex of the
+  surface (or to every vertex of `targets`, in that order) by `options.method`, delivered to `output(i, row)`
+  (`row`: a `const std::vector<double>&`, +infinity where unreachable or beyond `options.max_distance`) in the order
+  of the sources, one row at a time.
 
-  Columns without targets are the vertex indices of `CGAL::get_initialized_vertex_index_map(tm)` (for
-  `Surface_mesh`, the vertex index; otherwise the order of `vertices(tm)`). Each row equals the distances of a
-  single-source run of the method's class in `distances_only` mode (exactly so without a limit: the same engine on
-  the same compact mesh; with a finite `max_distance` the run is on the source's neighbourhood, see
-  `local_geodesic_distance_rows()`).
+  Columns without targets are the vertex indices of the surface (`Geodesic_surface_3::vertex_index()`: for a mesh,
+  `CGAL::get_initialized_vertex_index_map(tm)`, i.e. the vertex index of a `Surface_mesh`; for a soup, the point
+  index). Each row equals the distances of a single-source run of the method's class in `distances_only` mode
+  (exactly so without a limit: the same engine on the same compact mesh; with a finite `max_distance` the run is on
+  the source's neighbourhood, see `local_geodesic_distance_rows()`).
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`: with TBB
-          and a parallel tag, sources run on `options.threads` threads, one engine per thread on one compact mesh
-          shared read-only. Rows are computed in source order by whichever thread is free and at most
+          and a parallel tag, sources run on `options.threads` threads, one engine per thread on the surface's
+          compact mesh, shared read-only. Rows are computed in source order by whichever thread is free and at most
           `options.rows_in_flight` are held, so the memory is that of a few rows whatever the number of sources;
           `output` is never called twice at a time, possibly from a worker thread. The rows do not depend on the
           thread count.
   \param progress `bool(const char* stage, double fraction)` (stage `"geodesic distance matrix"`), called on the
          calling thread; `false` stops after the rows already computed (they are delivered) and throws
          `CGAL::MDCS::Operation_cancelled`.
-  \param np optional named parameter `vertex_point_map`.
-  \throws std::invalid_argument for invalid options, sources or targets, or a mesh the package rejects.
+  \throws std::invalid_argument for invalid options, sources or targets, or a surface the method does not support
+          (flat-exact and fast marching refuse non-manifold and reversed edges, as their classes do).
 */
-template <class ConcurrencyTag, class TriangleMesh, class SourceRange, class TargetRange, class RowOutput,
-          class Progress = CGAL::MDCS::No_progress,
-          class NamedParameters = CGAL::parameters::Default_named_parameters>
-void geodesic_distance_rows(const TriangleMesh& tm, const SourceRange& sources, const TargetRange& targets,
-                            RowOutput output, const Geodesic_matrix_options& options = Geodesic_matrix_options(),
-                            Progress progress = Progress(),
-                            const NamedParameters& np = CGAL::parameters::default_values())
-{
-  internal::check_matrix_options(options, false);
-  const std::vector<internal::Matrix_index> s = internal::vertex_indices(tm, sources, "source");
-  const std::vector<internal::Matrix_index> t = internal::vertex_indices(tm, targets, "target");
-  const internal::Matrix_surface surface = internal::make_matrix_surface(tm, np);
-  const std::size_t threads = CGAL::MDCS::effective_threads<ConcurrencyTag>(options.threads);
-  internal::with_matrix_engine(options.method, [&](auto tag) {
-    internal::dense_rows<typename decltype(tag)::type>(surface, s, &t, output, options, threads, progress);
-  });
-}
-
-/*!
-  \ingroup PkgPolyhedralGeodesics3Ref
-  \brief The same, to every vertex of `tm` (rows of `num_vertices(tm)` entries, indexed by vertex index).
-*/
-template <class ConcurrencyTag, class TriangleMesh, class SourceRange, class RowOutput,
-          class Progress = CGAL::MDCS::No_progress,
-          class NamedParameters = CGAL::parameters::Default_named_parameters>
-void geodesic_distance_rows(const TriangleMesh& tm, const SourceRange& sources, RowOutput output,
+template <class ConcurrencyTag, class TriangleMesh, class VertexPointMap, class SourceRange, class TargetRange,
+          class RowOutput, class Progress = CGAL::MDCS::No_progress>
+void geodesic_distance_rows(const Geodesic_surface_3<TriangleMesh, double, VertexPointMap>& surface,
+                            const SourceRange& sources, const TargetRange& targets, RowOutput output,
                             const Geodesic_matrix_options& options = Geodesic_matrix_options(),
-                            Progress progress = Progress(),
-                            const NamedParameters& np = CGAL::parameters::default_values())
+                            Progress progress = Progress())
 {
-  internal::check_matrix_options(options, false);
-  const std::vector<internal::Matrix_index> s = internal::vertex_indices(tm, sources, "source");
-  const internal::Matrix_surface surface = internal::make_matrix_surface(tm, np);
-  const std::size_t threads = CGAL::MDCS::effective_threads<ConcurrencyTag>(options.threads);
-  internal::with_matrix_engine(options.method, [&](auto tag) {
-    internal::dense_rows<typename decltype(tag)::type>(surface, s, nullptr, output, options, threads, progress);
-  });
+  const std::vector<internal::Matrix_index> s = internal::vertex_indices(surface, sources, "source");
+  const std::vector<internal::Matrix_index> t = internal::vertex_indices(surface, targets, "target");
+  internal::dense_rows_on<ConcurrencyTag>(surface.compact_mesh(), s, &t, output, options, progress);
 }
 
-/*!
-  \ingroup PkgPolyhedralGeodesics3Ref
-  \brief The dense matrix of `geodesic_distance_rows()` to every vertex, row-major in one vector
-  (`sources.size() * num_vertices(tm)` entries: for many sources prefer the rows function, whose memory is bounded).
-*/
-template <class ConcurrencyTag, class TriangleMesh, class SourceRange>
-std::vector<double> geodesic_distance_matrix(const TriangleMesh& tm, const SourceRange& sources,
-                                             const Geodesic_matrix_options& options = Geodesic_matrix_options())
+/// The same, to every vertex of the surface (rows of `number_of_vertices()` entries, indexed by vertex index).
+template <class ConcurrencyTag, class TriangleMesh, class VertexPointMap, class SourceRange, class RowOutput,
+          class Progress = CGAL::MDCS::No_progress>
+void geodesic_distance_rows(const Geodesic_surface_3<TriangleMesh, double, VertexPointMap>& surface,
+                            const SourceRange& sources, RowOutput output,
+                            const Geodesic_matrix_options& options = Geodesic_matrix_options(),
+                            Progress progress = Progress())
 {
-  const std::size_t nv = num_vertices(tm);
-  std::vector<double> m;
-  geodesic_distance_rows<ConcurrencyTag>(tm, sources, [&](std::size_t i, const std::vector<double>& row) {
-    if(m.empty()) m.reserve(nv * std::size_t(std::distance(std::begin(sources), std::end(sources))));
-    if(m.size() != i * nv) throw std::logic_error("CGAL::Polyhedral_geodesics_3: rows out of order");
-    m.insert(m.end(), row.begin(), row.end());
-  }, options);
-  return m;
+  const std::vector<internal::Matrix_index> s = internal::vertex_indices(surface, sources, "source");
+  internal::dense_rows_on<ConcurrencyTag>(surface.compact_mesh(), s, nullptr, output, options, progress);
 }
 
 /*!
@@ -430,49 +445,29 @@ std::vector<double> geodesic_distance_matrix(const TriangleMesh& tm, const Sourc
   Threads, memory, progress and errors as in `geodesic_distance_rows()` (stage `"local geodesic distance matrix"`).
   Each row is directed (from its source): for a symmetric matrix see `symmetric_local_geodesic_distance_matrix()`.
 */
-template <class ConcurrencyTag, class TriangleMesh, class SourceRange, class RowOutput,
-          class Progress = CGAL::MDCS::No_progress,
-          class NamedParameters = CGAL::parameters::Default_named_parameters>
-void local_geodesic_distance_rows(const TriangleMesh& tm, const SourceRange& sources, RowOutput output,
-                                  const Geodesic_matrix_options& options, Progress progress = Progress(),
-                                  const NamedParameters& np = CGAL::parameters::default_values())
+template <class ConcurrencyTag, class TriangleMesh, class VertexPointMap, class SourceRange, class RowOutput,
+          class Progress = CGAL::MDCS::No_progress>
+void local_geodesic_distance_rows(const Geodesic_surface_3<TriangleMesh, double, VertexPointMap>& surface,
+                                  const SourceRange& sources, RowOutput output, const Geodesic_matrix_options& options,
+                                  Progress progress = Progress())
 {
-  internal::check_matrix_options(options, true);
-  const std::vector<internal::Matrix_index> s = internal::vertex_indices(tm, sources, "source");
-  const internal::Matrix_surface surface = internal::make_matrix_surface(tm, np);
-  const std::size_t threads = CGAL::MDCS::effective_threads<ConcurrencyTag>(options.threads);
-  internal::with_matrix_engine(options.method, [&](auto tag) {
-    internal::sparse_rows<typename decltype(tag)::type>(surface, s, output, options, threads, progress);
-  });
+  const std::vector<internal::Matrix_index> s = internal::vertex_indices(surface, sources, "source");
+  internal::sparse_rows_on<ConcurrencyTag>(surface.compact_mesh(), s, output, options, progress);
 }
 
 /*!
   \ingroup PkgPolyhedralGeodesics3Ref
-  \brief The local distance matrix from every vertex of `tm` (rows and columns: vertex indices), as
+  \brief The local distance matrix from every vertex (rows and columns: vertex indices), as
   `local_geodesic_distance_rows()` computes its rows: entry (u, v) is the distance from u to v when it is at most
   `options.max_distance`, and there is no entry otherwise. Not symmetric in general: the two directions of a pair
   are two runs (for the exact methods they differ by rounding, for the approximate ones by the method's error).
 */
-template <class ConcurrencyTag, class TriangleMesh, class Progress = CGAL::MDCS::No_progress,
-          class NamedParameters = CGAL::parameters::Default_named_parameters>
-Geodesic_sparse_matrix local_geodesic_distance_matrix(const TriangleMesh& tm, const Geodesic_matrix_options& options,
-                                                      Progress progress = Progress(),
-                                                      const NamedParameters& np = CGAL::parameters::default_values())
+template <class ConcurrencyTag, class TriangleMesh, class VertexPointMap, class Progress = CGAL::MDCS::No_progress>
+Geodesic_sparse_matrix local_geodesic_distance_matrix(const Geodesic_surface_3<TriangleMesh, double, VertexPointMap>& surface,
+                                                      const Geodesic_matrix_options& options,
+                                                      Progress progress = Progress())
 {
-  Geodesic_sparse_matrix m;
-  m.rows = m.columns = num_vertices(tm);
-  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> all(m.rows);
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm);
-  for(auto v : vertices(tm)) all[std::size_t(get(vim, v))] = v;
-  local_geodesic_distance_rows<ConcurrencyTag>(
-    tm, all,
-    [&](std::size_t, const std::vector<std::uint32_t>& columns, const std::vector<double>& values) {
-      m.column.insert(m.column.end(), columns.begin(), columns.end());
-      m.value.insert(m.value.end(), values.begin(), values.end());
-      m.row_begin.push_back(m.column.size());
-    },
-    options, progress, np);
-  return m;
+  return internal::local_matrix_on<ConcurrencyTag>(surface.compact_mesh(), options, progress);
 }
 
 /*!
@@ -486,18 +481,103 @@ Geodesic_sparse_matrix local_geodesic_distance_matrix(const TriangleMesh& tm, co
   `max_distance`, by rounding for the exact methods) is added to the other row with that value. The smaller value is
   kept because every method's distance is the length of a path it found or an over-estimate (merged windows,
   Dijkstra, and in practice fast marching), so the smaller one is the better estimate; for the exact methods the two
-  directions agree up to rounding (the tests measure 1e-15 relative or less) and the choice changes nothing beyond it.
-  The memory is that of the matrix plus the entries found in one direction only.
+  directions agree up to rounding (the tests measure 1e-13 relative or less) and the choice changes nothing beyond
+  it. The memory is that of the matrix plus the entries found in one direction only.
 */
+template <class ConcurrencyTag, class TriangleMesh, class VertexPointMap, class Progress = CGAL::MDCS::No_progress>
+Geodesic_sparse_matrix symmetric_local_geodesic_distance_matrix(
+  const Geodesic_surface_3<TriangleMesh, double, VertexPointMap>& surface, const Geodesic_matrix_options& options,
+  Progress progress = Progress())
+{
+  const Geodesic_sparse_matrix directed = internal::local_matrix_on<ConcurrencyTag>(surface.compact_mesh(), options, progress);
+  return internal::symmetrize_by_minimum(directed, CGAL::MDCS::effective_threads<ConcurrencyTag>(options.threads));
+}
+
+/// @}
+/// \name Distance matrices on a triangle mesh
+/// The same functions on a `FaceGraph` with triangle faces: they build its `Geodesic_surface_3` first (named
+/// parameter `vertex_point_map`; sources and targets are vertex descriptors).
+/// @{
+
+template <class ConcurrencyTag, class TriangleMesh, class SourceRange, class TargetRange, class RowOutput,
+          class Progress = CGAL::MDCS::No_progress,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+void geodesic_distance_rows(const TriangleMesh& tm, const SourceRange& sources, const TargetRange& targets,
+                            RowOutput output, const Geodesic_matrix_options& options = Geodesic_matrix_options(),
+                            Progress progress = Progress(),
+                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::check_matrix_options(options, false);
+  const auto surface = internal::make_matrix_surface(tm, np);
+  geodesic_distance_rows<ConcurrencyTag>(surface, sources, targets, output, options, progress);
+}
+
+template <class ConcurrencyTag, class TriangleMesh, class SourceRange, class RowOutput,
+          class Progress = CGAL::MDCS::No_progress,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+void geodesic_distance_rows(const TriangleMesh& tm, const SourceRange& sources, RowOutput output,
+                            const Geodesic_matrix_options& options = Geodesic_matrix_options(),
+                            Progress progress = Progress(),
+                            const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::check_matrix_options(options, false);
+  const auto surface = internal::make_matrix_surface(tm, np);
+  geodesic_distance_rows<ConcurrencyTag>(surface, sources, output, options, progress);
+}
+
+/*!
+  \ingroup PkgPolyhedralGeodesics3Ref
+  \brief The dense matrix of `geodesic_distance_rows()` to every vertex, row-major in one vector
+  (`sources.size() * num_vertices(tm)` entries: for many sources prefer the rows function, whose memory is bounded).
+*/
+template <class ConcurrencyTag, class TriangleMesh, class SourceRange>
+std::vector<double> geodesic_distance_matrix(const TriangleMesh& tm, const SourceRange& sources,
+                                             const Geodesic_matrix_options& options = Geodesic_matrix_options())
+{
+  const std::size_t nv = num_vertices(tm);
+  std::vector<double> m;
+  m.reserve(nv * std::size_t(std::distance(std::begin(sources), std::end(sources))));
+  geodesic_distance_rows<ConcurrencyTag>(tm, sources, [&](std::size_t, const std::vector<double>& row) {
+    m.insert(m.end(), row.begin(), row.end()); // rows arrive in order
+  }, options);
+  return m;
+}
+
+template <class ConcurrencyTag, class TriangleMesh, class SourceRange, class RowOutput,
+          class Progress = CGAL::MDCS::No_progress,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+void local_geodesic_distance_rows(const TriangleMesh& tm, const SourceRange& sources, RowOutput output,
+                                  const Geodesic_matrix_options& options, Progress progress = Progress(),
+                                  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::check_matrix_options(options, true);
+  const auto surface = internal::make_matrix_surface(tm, np);
+  local_geodesic_distance_rows<ConcurrencyTag>(surface, sources, output, options, progress);
+}
+
+template <class ConcurrencyTag, class TriangleMesh, class Progress = CGAL::MDCS::No_progress,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+Geodesic_sparse_matrix local_geodesic_distance_matrix(const TriangleMesh& tm, const Geodesic_matrix_options& options,
+                                                      Progress progress = Progress(),
+                                                      const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::check_matrix_options(options, true);
+  const auto surface = internal::make_matrix_surface(tm, np);
+  return local_geodesic_distance_matrix<ConcurrencyTag>(surface, options, progress);
+}
+
 template <class ConcurrencyTag, class TriangleMesh, class Progress = CGAL::MDCS::No_progress,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 Geodesic_sparse_matrix symmetric_local_geodesic_distance_matrix(
   const TriangleMesh& tm, const Geodesic_matrix_options& options, Progress progress = Progress(),
   const NamedParameters& np = CGAL::parameters::default_values())
 {
-  const Geodesic_sparse_matrix directed = local_geodesic_distance_matrix<ConcurrencyTag>(tm, options, progress, np);
-  return internal::symmetrize_by_minimum(directed, CGAL::MDCS::effective_threads<ConcurrencyTag>(options.threads));
+  internal::check_matrix_options(options, true);
+  const auto surface = internal::make_matrix_surface(tm, np);
+  return symmetric_local_geodesic_distance_matrix<ConcurrencyTag>(surface, options, progress);
 }
+
+/// @}
 
 } // namespace Polyhedral_geodesics_3
 } // namespace CGAL

@@ -80,9 +80,8 @@ public:
   typedef Geodesic_mesh<double> Mesh;
   typedef Mesh::Index Index;
 
-  // `star_begin`, `star`: the outgoing halfedges of every vertex of `global` (build_vertex_star()).
-  Local_geodesic_submesh(const Mesh& global, const std::vector<Index>& star_begin, const std::vector<Index>& star)
-    : g_(global), star_begin_(star_begin), star_(star), face_stamp_(global.number_of_faces, 0),
+  explicit Local_geodesic_submesh(const Mesh& global)
+    : g_(global), star_begin_(global.star_begin), star_(global.star), face_stamp_(global.number_of_faces, 0),
       face_in_(global.number_of_faces, 0), vertex_stamp_(global.number_of_vertices, 0),
       expanded_(global.number_of_vertices, 0), vertex_local_(global.number_of_vertices, 0)
   {}
@@ -142,7 +141,10 @@ private:
 
   bool included(Index f) const { return face_stamp_[std::size_t(f)] == epoch_ && face_in_[std::size_t(f)]; }
 
-  // The compact mesh of faces_ (sorted), as build_geodesic_mesh() would number it.
+  // The compact mesh of faces_ (sorted), numbered as the builders of Geodesic_mesh number a mesh: halfedges, edges,
+  // vertices and stars in the order of the whole mesh. An edge keeps the halfedges of its faces that are inside (the
+  // twin, or the members of a non-manifold or reversed edge's cycle); an edge left with one halfedge is a border of
+  // the neighbourhood (a cut, farther than R from the source: its vertices become boundary vertices).
   void assemble()
   {
     vertices_.clear();
@@ -161,58 +163,88 @@ private:
     m_.number_of_faces = nf;
     m_.points.resize(nv);
     m_.vertex_angle_sum.resize(nv);
+    m_.vertex_is_singular.assign(nv, 0);
+    m_.number_of_pinched_vertices = m_.number_of_isolated_vertices = 0;
     for(std::size_t i = 0; i < nv; ++i) {
-      m_.points[i] = g_.points[std::size_t(vertices_[i])];
-      m_.vertex_angle_sum[i] = g_.vertex_angle_sum[std::size_t(vertices_[i])];
+      const std::size_t g = std::size_t(vertices_[i]);
+      m_.points[i] = g_.points[g];
+      m_.vertex_angle_sum[i] = g_.vertex_angle_sum[g];
+      if(!g_.vertex_is_singular.empty() && g_.vertex_is_singular[g]) {
+        m_.vertex_is_singular[i] = 1;
+        ++m_.number_of_pinched_vertices;
+      }
     }
-    // The local index of each global face: by binary search in the sorted faces_ (only twins need it).
-    const auto local_face = [&](Index f) {
-      return Index(std::lower_bound(faces_.begin(), faces_.end(), f) - faces_.begin());
+    // The local halfedge of a global one (its face inside): by binary search in the sorted faces_.
+    const auto local_halfedge = [&](Index g) {
+      const Index f = Mesh::face_of(g);
+      return 3 * Index(std::lower_bound(faces_.begin(), faces_.end(), f) - faces_.begin()) + g % 3;
     };
     m_.he.resize(nh);
     for(std::size_t lf = 0; lf < nf; ++lf)
       for(int k = 0; k < 3; ++k) {
-        Geodesic_halfedge<double> r = g_.he[std::size_t(3 * faces_[lf] + k)];
+        const Index g = 3 * faces_[lf] + k, h = Index(3 * lf + std::size_t(k));
+        Geodesic_halfedge<double> r = g_.he[std::size_t(g)];
         r.source = vertex_local_[std::size_t(r.source)];
-        if(r.twin >= 0) {
-          const Index tf = Mesh::face_of(r.twin);
-          r.twin = included(tf) ? 3 * local_face(tf) + r.twin % 3 : -1;
+        if(r.twin >= 0) { // an edge of an oriented manifold: the twin, if its face is inside
+          r.twin = included(Mesh::face_of(r.twin)) ? local_halfedge(r.twin) : Index(-1);
+          r.radial = r.twin >= 0 ? r.twin : h;
+        } else {
+          // a border, or a non-manifold or reversed edge: the next member of its cycle that is inside (the cycle
+          // runs in increasing order, so it stays so among the members inside)
+          Index next = r.radial;
+          while(next != g && !included(Mesh::face_of(next))) next = g_.he[std::size_t(next)].radial;
+          r.radial = next == g ? h : local_halfedge(next);
         }
-        m_.he[3 * lf + std::size_t(k)] = r;
+        m_.he[std::size_t(h)] = r;
       }
-    // Edges numbered in the order of their first halfedge, as build_halfedge_records() does.
+    // Edges numbered in the order of their first halfedge, as the builders do.
     m_.edge_halfedge.clear();
+    m_.number_of_border_edges = m_.number_of_nonmanifold_edges = m_.number_of_reversed_edges = 0;
+    edge_done_.assign(nh, 0);
     for(std::size_t h = 0; h < nh; ++h) {
-      const Index t = m_.he[h].twin;
-      if(t < 0 || std::size_t(t) > h) {
-        const Index e = Index(m_.edge_halfedge.size());
-        m_.he[h].edge = e;
-        if(t >= 0) m_.he[std::size_t(t)].edge = e;
-        m_.edge_halfedge.push_back(Index(h));
-      }
+      if(edge_done_[h]) continue;
+      const Index e = Index(m_.edge_halfedge.size());
+      m_.edge_halfedge.push_back(Index(h));
+      std::size_t members = 0;
+      Index g = Index(h);
+      do {
+        m_.he[std::size_t(g)].edge = e;
+        edge_done_[std::size_t(g)] = 1;
+        ++members;
+        g = m_.he[std::size_t(g)].radial;
+      } while(g != Index(h));
+      if(members == 1) ++m_.number_of_border_edges;
+      else if(m_.he[h].twin < 0) (members >= 3 ? m_.number_of_nonmanifold_edges : m_.number_of_reversed_edges) += 1;
     }
     m_.number_of_edges = m_.edge_halfedge.size();
+    // Stars (increasing halfedges per vertex, by a counting sort), one outgoing halfedge, boundary flags.
+    m_.star_begin.assign(nv + 1, 0);
+    for(std::size_t h = 0; h < nh; ++h) ++m_.star_begin[std::size_t(m_.he[h].source) + 1];
+    for(std::size_t v = 0; v < nv; ++v) m_.star_begin[v + 1] += m_.star_begin[v];
+    m_.star.resize(nh);
+    for(std::size_t h = nh; h-- > 0;) m_.star[std::size_t(--m_.star_begin[std::size_t(m_.he[h].source) + 1])] = Index(h);
+    for(std::size_t v = 0; v < nv; ++v) m_.star_begin[v] = m_.star_begin[v + 1];
+    m_.star_begin[nv] = Index(nh);
     m_.vertex_halfedge.assign(nv, -1);
     m_.vertex_on_boundary.assign(nv, 0);
-    for(std::size_t h = 0; h < nh; ++h) {
-      const Index a = m_.he[h].source;
-      if(m_.vertex_halfedge[std::size_t(a)] < 0) m_.vertex_halfedge[std::size_t(a)] = Index(h);
-      if(m_.he[h].twin < 0) {
-        m_.vertex_on_boundary[std::size_t(a)] = 1;
+    for(std::size_t v = 0; v < nv; ++v) m_.vertex_halfedge[v] = m_.star[std::size_t(m_.star_begin[v])];
+    for(std::size_t h = 0; h < nh; ++h)
+      if(m_.he[h].radial == Index(h)) {
+        m_.vertex_on_boundary[std::size_t(m_.he[h].source)] = 1;
         m_.vertex_on_boundary[std::size_t(m_.target(Index(h)))] = 1;
       }
-    }
   }
 
   const Mesh& g_;
-  const std::vector<Index>& star_begin_;
-  const std::vector<Index>& star_;
+  const Large_vector<Index>& star_begin_;
+  const Large_vector<Index>& star_;
   std::vector<std::uint32_t> face_stamp_;
   std::vector<char> face_in_;
   std::vector<std::uint32_t> vertex_stamp_, expanded_;
   std::vector<Index> vertex_local_;
   std::uint32_t epoch_ = 0;
   std::vector<Index> faces_, vertices_;
+  std::vector<char> edge_done_;
   Mesh m_;
   Index source_ = -1;
 };
