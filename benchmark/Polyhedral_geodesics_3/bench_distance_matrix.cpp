@@ -65,6 +65,14 @@ std::string load_line()
 // Amdahl: the wall time at `p` threads of a run whose serial part took `serial` and parallel part `parallel` on one.
 double amdahl(double serial, double parallel, double p) { return serial + parallel / p; }
 
+// The speed-up at `t` threads on an otherwise idle machine, from CPU times (meaningful on a loaded machine, where
+// wall times are not): the serial part `serial` (CPU s at one thread) runs alone, the rest of the CPU time `cpu_t`
+// measured at `t` threads (its parallel overhead included) is spread over the `t` threads. A projection.
+double cpu_speedup(double cpu_1, double cpu_t, double serial, double t)
+{
+  return cpu_1 / (serial + std::max(0.0, cpu_t - serial) / t);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -113,7 +121,8 @@ int main(int argc, char** argv)
             << o.common.runs << " interleaved runs, medians; TBB " << (CGAL::MDCS::has_parallel_support() ? "yes" : "NO")
             << ", " << CGAL::MDCS::hardware_threads() << " hardware threads). Load at start: " << load_line() << "\n\n";
   mdcs_bench::Table table({"mesh", "vertices", "part", "sources", "max_distance", "threads", "wall_s", "cpu_s",
-                           "speedup", "efficiency", "full_run_s", "ratio_to_full_run", "entries", "peak_MiB",
+                           "speedup", "efficiency", "cpu_ratio", "cpu_speedup", "cpu_efficiency", "full_run_s",
+                           "ratio_to_full_run", "full_run_cpu_s", "cpu_ratio_to_full_run", "entries", "peak_MiB",
                            "serial_fraction", "projected_16_threads_s", "identical", "load"});
   for(const Mesh_spec& spec : specs) {
     Mesh mesh;
@@ -173,10 +182,14 @@ int main(int argc, char** argv)
         const double w = mdcs_bench::median(wall[t]);
         const bool identical = checksum[t] == checksum[o.threads.front()];
         table.add_row({spec.name, std::to_string(n), "dense", std::to_string(sources.size()), "inf", std::to_string(t),
-                       fmt(w), fmt(mdcs_bench::median(cpu[t])), fmt(w1 / w), fmt(w1 / w / double(t)), "-", "-",
+                       fmt(w), fmt(mdcs_bench::median(cpu[t])), fmt(w1 / w), fmt(w1 / w / double(t)),
+                       fmt(mdcs_bench::median(cpu[t]) / c1), fmt(cpu_speedup(c1, mdcs_bench::median(cpu[t]), serial, double(t))),
+                       fmt(cpu_speedup(c1, mdcs_bench::median(cpu[t]), serial, double(t)) / double(t)), "-", "-", "-", "-",
                        std::to_string(sources.size() * n), "-", fmt(serial / c1), fmt(amdahl(serial, c1 - serial, 16)),
                        identical ? "yes" : "NO", load_line()});
-        std::cout << "  dense, " << t << " thread(s): " << fmt(w) << " s, speed-up " << fmt(w1 / w)
+        std::cout << "  dense, " << t << " thread(s): " << fmt(w) << " s, speed-up " << fmt(w1 / w) << ", CPU "
+                  << fmt(mdcs_bench::median(cpu[t])) << " s (idle-machine speed-up from CPU times "
+                  << fmt(cpu_speedup(c1, mdcs_bench::median(cpu[t]), serial, double(t))) << ")"
                   << (identical ? "" : "  ROWS DIFFER") << "\n";
       }
     }
@@ -219,7 +232,7 @@ int main(int argc, char** argv)
           }
         }
       }
-      const double full = mdcs_bench::median(full_wall);
+      const double full = mdcs_bench::median(full_wall), full_c = mdcs_bench::median(full_cpu);
       const double w1 = mdcs_bench::median(wall[o.threads.front()]);
       const double c1 = mdcs_bench::median(cpu[o.threads.front()]);
       // Serial part at one thread: everything but the rows (the compact mesh, the symmetrization, counted as serial
@@ -229,19 +242,30 @@ int main(int argc, char** argv)
         const double w = mdcs_bench::median(wall[t]);
         const bool identical = values[t] == values[o.threads.front()] && entries[t] == entries[o.threads.front()];
         table.add_row({spec.name, std::to_string(n), "sparse symmetric", std::to_string(n), fmt(r_max), std::to_string(t),
-                       fmt(w), fmt(mdcs_bench::median(cpu[t])), fmt(w1 / w), fmt(w1 / w / double(t)), fmt(full),
-                       fmt(w / full), std::to_string(entries[t]), fmt(peak[t]), fmt(serial / c1),
+                       fmt(w), fmt(mdcs_bench::median(cpu[t])), fmt(w1 / w), fmt(w1 / w / double(t)),
+                       fmt(mdcs_bench::median(cpu[t]) / c1), fmt(cpu_speedup(c1, mdcs_bench::median(cpu[t]), serial, double(t))),
+                       fmt(cpu_speedup(c1, mdcs_bench::median(cpu[t]), serial, double(t)) / double(t)), fmt(full),
+                       fmt(w / full), fmt(full_c),
+                       fmt(c1 / cpu_speedup(c1, mdcs_bench::median(cpu[t]), serial, double(t)) / full_c),
+                       std::to_string(entries[t]), fmt(peak[t]), fmt(serial / c1),
                        fmt(amdahl(serial, c1 - serial, 16)), identical && symmetric ? "yes" : "NO", load_line()});
         std::cout << "  sparse (max_distance " << o.radius_edges << " edges), " << t << " thread(s): " << fmt(w)
                   << " s = " << fmt(w / full) << " full single-source runs (" << fmt(full) << " s), "
-                  << entries[t] << " entries (" << fmt(double(entries[t]) / double(n)) << " per row)"
+                  << entries[t] << " entries (" << fmt(double(entries[t]) / double(n)) << " per row); from CPU times: "
+                  << fmt(c1 / cpu_speedup(c1, mdcs_bench::median(cpu[t]), serial, double(t)) / full_c)
+                  << " full runs on an idle machine"
                   << (symmetric ? "" : "  NOT SYMMETRIC") << (identical ? "" : "  DIFFERS") << "\n";
       }
     }
   }
   std::cout << "\n";
   table.print();
-  std::cout << "\nspeedup = wall(1 thread) / wall(t threads); efficiency = speedup / t; serial_fraction = serial CPU "
+  std::cout << "\nspeedup = wall(1 thread) / wall(t threads); efficiency = speedup / t; cpu_ratio = CPU time at t "
+               "threads / CPU time at 1 (parallel overhead); cpu_speedup = CPU(1) / (serial CPU + (CPU(t) - serial CPU) "
+               "/ t), the speed-up an idle machine would give (a projection from CPU times, meaningful when the "
+               "machine is loaded and wall times are not); cpu_efficiency = cpu_speedup / t; cpu_ratio_to_full_run = "
+               "the sparse matrix's wall time at t threads projected from CPU times / CPU time of one full run; "
+               "serial_fraction = serial CPU "
                "time / total CPU time at one thread; projected_16_threads_s = Amdahl's law from it (a projection, "
                "not a measurement). Load: /proc/loadavg at the end of each row (the machine may be shared).\n";
   write_table_csv(table, o.common.csv);

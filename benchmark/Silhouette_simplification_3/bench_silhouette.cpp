@@ -106,6 +106,7 @@ int main(int argc, char** argv)
                            "picked_edges", "mapped_edges", "mapped_edges_alpha1", "fine_loops", "coarse_loops", "incoh_picking", "incoh_picking_remedy",
                            "incoh_mapping", "incoh_mapping_remedy", "peak_MiB"});
   mdcs_bench::Table scaling({"mesh", "fine_faces", "frames", "remedy", "threads", "wall_s", "cpu_s", "speedup", "efficiency",
+                             "cpu_ratio", "cpu_speedup", "cpu_efficiency",
                              "serial_fraction", "projected_16_threads_s", "identical", "load"});
   const auto load_line = [] {
     std::ifstream in("/proc/loadavg");
@@ -232,14 +233,18 @@ int main(int argc, char** argv)
         // Serial: with the remedy, picking and mapping run in view order (per-view medians of the table above).
         const double s = remedy ? (median(pk) + median(mp)) / per_view : 0.0;
         for(std::size_t th : threads) {
-          const double w = median(wall[th]);
+          const double w = median(wall[th]), ct = median(cpu[th]);
+          // The speed-up an idle machine would give, from CPU times: the serial share of the CPU time at one thread
+          // alone, the rest of the CPU time at th threads spread over them (a projection; see the legend).
+          const double cs = c1 / (s * c1 + std::max(0.0, ct - s * c1) / double(th));
           const bool identical = fingerprint[th] == fingerprint[t1];
           scaling.add_row({"\"" + c.name + "\"", std::to_string(num_faces(fine)), std::to_string(rotation_frames),
-                           remedy ? "yes" : "no", std::to_string(th), fmt(w), fmt(median(cpu[th])), fmt(w1 / w),
-                           fmt(w1 / w / double(th)), fmt(s, "%.3f"), fmt(c1 * (s + (1 - s) / 16)), identical ? "yes" : "NO",
+                           remedy ? "yes" : "no", std::to_string(th), fmt(w), fmt(ct), fmt(w1 / w),
+                           fmt(w1 / w / double(th)), fmt(ct / c1), fmt(cs), fmt(cs / double(th)), fmt(s, "%.3f"), fmt(c1 * (s + (1 - s) / 16)), identical ? "yes" : "NO",
                            load_line()});
-          std::printf("  %s, rotation of %zu frames%s, %zu thread(s): %.3f s, speed-up %.3f%s\n", c.name.c_str(),
-                      rotation_frames, remedy ? " with the remedy" : "", th, w, w1 / w, identical ? "" : "  FRAMES DIFFER");
+          std::printf("  %s, rotation of %zu frames%s, %zu thread(s): %.3f s, speed-up %.3f, CPU %.3f s (idle-machine "
+                      "speed-up from CPU times %.3f)%s\n", c.name.c_str(), rotation_frames, remedy ? " with the remedy" : "",
+                      th, w, w1 / w, ct, cs, identical ? "" : "  FRAMES DIFFER");
           std::fflush(stdout);
         }
       }
@@ -255,7 +260,9 @@ int main(int argc, char** argv)
   table.print();
   if(!table.write_csv(csv)) { std::fprintf(stderr, "cannot write %s\n", csv.c_str()); return 1; }
   std::printf("\nCSV written to %s\n", csv.c_str());
-  std::printf("\nThread scaling of simplify_silhouette_frames (speedup = wall(1 thread) / wall(t); serial_fraction: "
+  std::printf("\nThread scaling of simplify_silhouette_frames (speedup = wall(1 thread) / wall(t); cpu_ratio = CPU time at "
+              "t threads / CPU time at 1; cpu_speedup = CPU(1) / (serial CPU + (CPU(t) - serial CPU) / t), the speed-up "
+              "an idle machine would give, a projection from CPU times for a loaded machine; serial_fraction: "
               "share of picking + mapping in a view when the remedy makes them run in order, else 0; "
               "projected_16_threads_s: Amdahl's law from it and the CPU time at one thread, a projection):\n");
   scaling.print();

@@ -231,7 +231,8 @@ int main(int argc, char** argv)
                        return r.round_energies;
                      }});
 
-  mdcs_bench::Table table({"path", "size", "threads", "wall_s", "cpu_s", "speedup", "efficiency", "stage_wall_s",
+  mdcs_bench::Table table({"path", "size", "threads", "wall_s", "cpu_s", "speedup", "efficiency", "cpu_ratio",
+                           "cpu_speedup", "cpu_efficiency", "stage_wall_s",
                            "stage_speedup", "serial_fraction", "projected_16_threads_s", "identical", "load"});
   for(const Path& p : paths) {
     std::map<std::size_t, std::vector<double>> wall, cpu, par, par_wall;
@@ -254,18 +255,25 @@ int main(int argc, char** argv)
     const double sw1 = mdcs_bench::median(par_wall[t1]);
     for(std::size_t t : threads) {
       const double w = mdcs_bench::median(wall[t]), sw = mdcs_bench::median(par_wall[t]);
+      const double ct = mdcs_bench::median(cpu[t]);
+      // The speed-up an idle machine would give, from CPU times (see the legend); not for the tangent path, whose
+      // serial part is not measured apart.
+      const double cs = std::isnan(serial) ? serial : c1 / (serial + std::max(0.0, ct - serial) / double(t));
       const bool identical = fingerprint[t] == fingerprint[t1];
-      table.add_row({p.name, p.size, std::to_string(t), fmt(w), fmt(mdcs_bench::median(cpu[t])), fmt(w1 / w),
-                     fmt(w1 / w / double(t)), sw > 0 ? fmt(sw) : "-", sw > 0 ? fmt(sw1 / sw) : "-", fmt(serial / c1),
+      table.add_row({p.name, p.size, std::to_string(t), fmt(w), fmt(ct), fmt(w1 / w),
+                     fmt(w1 / w / double(t)), fmt(ct / c1), fmt(cs), fmt(cs / double(t)), sw > 0 ? fmt(sw) : "-", sw > 0 ? fmt(sw1 / sw) : "-", fmt(serial / c1),
                      fmt(serial + (c1 - serial) / 16), identical ? "yes" : "NO", load_line()});
-      std::printf("  %-26s %zu thread(s): %8.3f s, speed-up %.3f%s\n", p.name.c_str(), t, w, w1 / w,
-                  identical ? "" : "  RESULTS DIFFER");
+      std::printf("  %-26s %zu thread(s): %8.3f s, speed-up %.3f, CPU %.3f s (idle-machine speed-up from CPU times "
+                  "%.3f)%s\n", p.name.c_str(), t, w, w1 / w, ct, cs, identical ? "" : "  RESULTS DIFFER");
       std::fflush(stdout);
     }
   }
   std::printf("\n");
   table.print();
-  std::printf("\nspeedup = wall(1 thread) / wall(t); efficiency = speedup / t; stage_wall_s, stage_speedup: the same "
+  std::printf("\nspeedup = wall(1 thread) / wall(t); efficiency = speedup / t; cpu_ratio = CPU time at t threads / "
+              "CPU time at 1 (parallel overhead); cpu_speedup = CPU(1) / (serial CPU + (CPU(t) - serial CPU) / t), the "
+              "speed-up an idle machine would give (a projection from CPU times, meaningful when the machine is "
+              "loaded and wall times are not); cpu_efficiency = cpu_speedup / t; stage_wall_s, stage_speedup: the same "
               "for the parallel stage alone (weights: the weights; refine: the independent runs; restarts: all of it; "
               "basin: the search moves); serial_fraction = CPU time outside the "
               "parallel stages / total CPU time at one thread (weights: outside the \"weights\" stage; refine: the "
