@@ -3,7 +3,14 @@
 // mesh and face map) separately, edge counts, and the temporal-coherence metric with and without the
 // previous-frame remedy.
 //
+// Thread scaling (issue 29 item 5): a rotation of --rotation-frames views (default 72) through
+// simplify_silhouette_frames() at each of --threads (default 1,2), picking and mapping, without and with the
+// previous-frame remedy (then the biased methods run in view order); interleaved runs (--runs, default 3), medians,
+// speed-up, efficiency, the frames compared across thread counts, the serial fraction from the per-view stage
+// times of the first table and Amdahl's projection at 16 threads (a projection). CSV: FILE with "_threads" added.
+//
 // usage: bench_silhouette [--csv FILE] [--views N] [--frames N] [--large] [--mesh FILE --fine-faces N]...
+//                         [--threads 1,2] [--rotation-frames N] [--runs N]
 //   Default meshes (CGAL's demo data, MDCS_CGAL_MESH_DIR): bunny00.off simplified to 20,000 faces
 //   (coarse 1,000), bunny00.off as is (75k faces, coarse 1,000), and armadillo.off (52k faces, coarse
 //   1,000). --large adds bunny00.off after two Loop subdivisions (~1.2M faces, coarse 1,000). --mesh FILE adds a mesh of your own.
@@ -18,6 +25,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <map>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -53,7 +62,9 @@ static View orbit(const CGAL::Bbox_3& b, double angle)
 int main(int argc, char** argv)
 {
   std::string csv = "silhouette.csv";
-  std::size_t views = 36, frames = 60;
+  std::size_t views = 36, frames = 60, rotation_frames = 72;
+  std::vector<std::size_t> threads = {1, 2};
+  int runs = 3;
   bool large = false;
   std::vector<Case> cases;
   const std::string dir = MDCS_CGAL_MESH_DIR;
@@ -63,9 +74,21 @@ int main(int argc, char** argv)
     else if(a == "--views" && i + 1 < argc) views = std::stoul(argv[++i]);
     else if(a == "--frames" && i + 1 < argc) frames = std::stoul(argv[++i]);
     else if(a == "--large") large = true;
+    else if(a == "--rotation-frames" && i + 1 < argc) rotation_frames = std::stoul(argv[++i]);
+    else if(a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    else if(a == "--threads" && i + 1 < argc) {
+      threads.clear();
+      const std::string list = argv[++i];
+      for(std::size_t p = 0; p < list.size();) {
+        const std::size_t q = list.find(',', p);
+        threads.push_back(std::size_t(std::stoul(list.substr(p, q - p))));
+        p = q == std::string::npos ? list.size() : q + 1;
+      }
+    }
     else if(a == "--mesh" && i + 1 < argc) { Case c; c.path = argv[++i]; c.name = c.path.substr(c.path.find_last_of('/') + 1); cases.push_back(c); }
     else if(a == "--fine-faces" && i + 1 < argc && !cases.empty()) cases.back().fine_faces = std::stoul(argv[++i]);
-    else { std::fprintf(stderr, "usage: %s [--csv FILE] [--views N] [--frames N] [--large] [--mesh FILE [--fine-faces N]]...\n", argv[0]); return 2; }
+    else { std::fprintf(stderr, "usage: %s [--csv FILE] [--views N] [--frames N] [--large] [--mesh FILE [--fine-faces N]]... "
+                                "[--threads 1,2] [--rotation-frames N] [--runs N]\n", argv[0]); return 2; }
   }
   if(cases.empty()) {
     if(dir.empty()) { std::fprintf(stderr, "no CGAL demo meshes (MDCS_CGAL_MESH_DIR is empty): give --mesh FILE\n"); return 2; }
@@ -82,6 +105,15 @@ int main(int argc, char** argv)
                            "fine_extract_ms", "fine_decomp_ms", "picking_ms", "mapping_ms", "fine_edges", "coarse_edges",
                            "picked_edges", "mapped_edges", "mapped_edges_alpha1", "fine_loops", "coarse_loops", "incoh_picking", "incoh_picking_remedy",
                            "incoh_mapping", "incoh_mapping_remedy", "peak_MiB"});
+  mdcs_bench::Table scaling({"mesh", "fine_faces", "frames", "remedy", "threads", "wall_s", "cpu_s", "speedup", "efficiency",
+                             "cpu_ratio", "cpu_speedup", "cpu_efficiency",
+                             "serial_fraction", "projected_16_threads_s", "identical", "load"});
+  const auto load_line = [] {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    in >> a >> b >> c;
+    return a + " " + b + " " + c;
+  };
   for(const Case& c : cases) {
     Mesh fine;
     if(!CGAL::IO::read_polygon_mesh(c.path, fine) || num_faces(fine) == 0) {
@@ -172,6 +204,51 @@ int main(int argc, char** argv)
 
     using mdcs_bench::fmt;
     using mdcs_bench::median;
+    // Thread scaling of a whole rotation through simplify_silhouette_frames(), interleaved runs.
+    {
+      std::vector<View> rotation;
+      for(std::size_t t = 0; t < rotation_frames; ++t) rotation.push_back(orbit(box, 6.283185307179586 * double(t) / double(rotation_frames)));
+      const double per_view = median(ce) + median(cd) + median(fe) + median(fd) + median(pk) + median(mp);
+      for(int remedy = 0; remedy < 2; ++remedy) {
+        SS::Silhouette_frames_options fo;
+        if(remedy) { fo.picking.previous_bias = 0.5; fo.mapping.previous_bias = 0.5; }
+        std::map<std::size_t, std::vector<double>> wall, cpu;
+        std::map<std::size_t, std::vector<double>> fingerprint;
+        for(int r = 0; r < runs; ++r)
+          for(std::size_t th : threads) {
+            fo.threads = th;
+            std::vector<double> f;
+            const double t0 = mdcs_bench::now_seconds(), c0 = mdcs_bench::cpu_seconds();
+            SS::simplify_silhouette_frames<CGAL::Parallel_tag>(simplifier, rotation, fo, [&](std::size_t, SS::Silhouette_frame& fr) {
+              f.push_back(double(fr.fine_silhouette.size()));
+              f.push_back(fr.picking_error);
+              f.push_back(double(fr.mapped_halfedges().size()));
+            });
+            wall[th].push_back(mdcs_bench::now_seconds() - t0);
+            cpu[th].push_back(mdcs_bench::cpu_seconds() - c0);
+            if(r == 0) fingerprint[th] = f;
+          }
+        const std::size_t t1 = threads.front();
+        const double w1 = median(wall[t1]), c1 = median(cpu[t1]);
+        // Serial: with the remedy, picking and mapping run in view order (per-view medians of the table above).
+        const double s = remedy ? (median(pk) + median(mp)) / per_view : 0.0;
+        for(std::size_t th : threads) {
+          const double w = median(wall[th]), ct = median(cpu[th]);
+          // The speed-up an idle machine would give, from CPU times: the serial share of the CPU time at one thread
+          // alone, the rest of the CPU time at th threads spread over them (a projection; see the legend).
+          const double cs = c1 / (s * c1 + std::max(0.0, ct - s * c1) / double(th));
+          const bool identical = fingerprint[th] == fingerprint[t1];
+          scaling.add_row({"\"" + c.name + "\"", std::to_string(num_faces(fine)), std::to_string(rotation_frames),
+                           remedy ? "yes" : "no", std::to_string(th), fmt(w), fmt(ct), fmt(w1 / w),
+                           fmt(w1 / w / double(th)), fmt(ct / c1), fmt(cs), fmt(cs / double(th)), fmt(s, "%.3f"), fmt(c1 * (s + (1 - s) / 16)), identical ? "yes" : "NO",
+                           load_line()});
+          std::printf("  %s, rotation of %zu frames%s, %zu thread(s): %.3f s, speed-up %.3f, CPU %.3f s (idle-machine "
+                      "speed-up from CPU times %.3f)%s\n", c.name.c_str(), rotation_frames, remedy ? " with the remedy" : "",
+                      th, w, w1 / w, ct, cs, identical ? "" : "  FRAMES DIFFER");
+          std::fflush(stdout);
+        }
+      }
+    }
     table.add_row({"\"" + c.name + "\"", std::to_string(num_faces(fine)), std::to_string(num_faces(coarse.mesh)), fmt(pre, "%.3f"),
                    fmt(median(ce), "%.4f"), fmt(median(cd), "%.4f"), fmt(median(fe), "%.4f"), fmt(median(fd), "%.4f"),
                    fmt(median(pk), "%.4f"), fmt(median(mp), "%.3f"), fmt(median(nf), "%.0f"), fmt(median(nc), "%.0f"),
@@ -183,5 +260,15 @@ int main(int argc, char** argv)
   table.print();
   if(!table.write_csv(csv)) { std::fprintf(stderr, "cannot write %s\n", csv.c_str()); return 1; }
   std::printf("\nCSV written to %s\n", csv.c_str());
+  std::printf("\nThread scaling of simplify_silhouette_frames (speedup = wall(1 thread) / wall(t); cpu_ratio = CPU time at "
+              "t threads / CPU time at 1; cpu_speedup = CPU(1) / (serial CPU + (CPU(t) - serial CPU) / t), the speed-up "
+              "an idle machine would give, a projection from CPU times for a loaded machine; serial_fraction: "
+              "share of picking + mapping in a view when the remedy makes them run in order, else 0; "
+              "projected_16_threads_s: Amdahl's law from it and the CPU time at one thread, a projection):\n");
+  scaling.print();
+  const std::string scaling_csv = csv.size() > 4 && csv.compare(csv.size() - 4, 4, ".csv") == 0
+                                    ? csv.substr(0, csv.size() - 4) + "_threads.csv" : csv + "_threads.csv";
+  if(!scaling.write_csv(scaling_csv)) { std::fprintf(stderr, "cannot write %s\n", scaling_csv.c_str()); return 1; }
+  std::printf("CSV written to %s\n", scaling_csv.c_str());
   return 0;
 }

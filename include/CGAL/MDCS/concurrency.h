@@ -19,6 +19,7 @@
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -177,6 +178,154 @@ void parallel_for_blocks(std::size_t n, std::size_t block_size, std::size_t thre
   if(first)
     std::rethrow_exception(first);
 #endif
+}
+
+/*!
+  \brief `parallel_for_blocks()` whose error, if any, does not depend on the thread count: when bodies throw, the
+  exception of the lowest failing block is rethrown (the one a sequential run meets first). Blocks above a failed
+  one may be skipped; blocks below it always run to completion.
+*/
+template <class Body>
+void parallel_for_blocks_lowest_error(std::size_t n, std::size_t block_size, std::size_t threads, Body body)
+{
+  if(block_size == 0)
+    block_size = 1;
+  const std::size_t count = internal::Block_partition{n, block_size}.count();
+  const std::size_t none = std::size_t(-1);
+  std::vector<std::exception_ptr> errors(count);
+  std::atomic<std::size_t> lowest{none};
+  parallel_for_blocks(n, block_size, threads, [&](std::size_t begin, std::size_t end, std::size_t b) {
+    if(b > lowest.load(std::memory_order_relaxed))
+      return; // its result would be discarded anyway
+    try {
+      body(begin, end, b);
+    } catch(...) {
+      errors[b] = std::current_exception();
+      std::size_t seen = lowest.load(std::memory_order_relaxed);
+      while(b < seen && !lowest.compare_exchange_weak(seen, b, std::memory_order_relaxed)) {
+      }
+    }
+  });
+  const std::size_t b = lowest.load();
+  if(b != none)
+    std::rethrow_exception(errors[b]);
+}
+
+/*!
+  \brief An ordered pipeline: `compute(i, slot)` for every `i` in `[0, n)` on at most `threads` threads, then
+  `deliver(i, slot)` for `i = 0, 1, 2, ...` in this order, with at most `slots.size()` items computed and not yet
+  delivered (item `i` uses `slots[i % slots.size()]`; memory stays bounded however large `n` is).
+
+  Items are taken in increasing order by whichever thread is free (no barrier between groups of items, so uneven
+  items do not leave threads idle), and each is computed by `compute` alone: the delivered results do not depend
+  on the thread count. `deliver` is never called twice at a time, always in item order, but it may be called from
+  any thread of the loop (the one that completes the next item in order). `compute` returns `false` to stop the
+  pipeline (cancellation): no further item is taken, the items before the stopping one that were computed are
+  delivered. If `compute` or `deliver` throws for item `i`, the items before `i` are delivered, nothing after, and
+  the exception of the lowest such item is rethrown (the one a sequential loop meets first).
+  \return the number of items delivered.
+*/
+template <class Slot, class Compute, class Deliver>
+std::size_t parallel_ordered_pipeline(std::size_t n, std::size_t threads, std::vector<Slot>& slots, Compute compute,
+                                      Deliver deliver)
+{
+  if(slots.empty())
+    throw std::invalid_argument("MDCS: parallel_ordered_pipeline: at least one slot is needed");
+  const std::size_t capacity = slots.size();
+  if(threads <= 1 || n <= 1 || capacity <= 1 || !has_parallel_support()) {
+    for(std::size_t i = 0; i < n; ++i) {
+      if(!compute(i, slots[i % capacity]))
+        return i;
+      deliver(i, slots[i % capacity]);
+    }
+    return n;
+  }
+  // Slot states: 0 free (or being computed), 1 ready. `delivered` and the slots' data are handed from the computing
+  // thread to the delivering one through `ready` (release / acquire); only the holder of `delivering` delivers.
+  std::unique_ptr<std::atomic<char>[]> ready(new std::atomic<char>[capacity]);
+  for(std::size_t k = 0; k < capacity; ++k)
+    ready[k].store(0);
+  std::atomic<std::size_t> next{0}, delivered{0}, limit{n}; // limit: the lowest failed or stopping item
+  std::atomic<bool> delivering{false}, stop{false};
+  std::mutex error_mutex;
+  std::exception_ptr error;
+  std::size_t error_item = n;
+  const auto fail = [&](std::size_t i, std::exception_ptr e) {
+    std::lock_guard<std::mutex> lock(error_mutex);
+    if(i < error_item) {
+      error_item = i;
+      error = e;
+    }
+    std::size_t seen = limit.load();
+    while(i < seen && !limit.compare_exchange_weak(seen, i)) {
+    }
+    stop.store(true);
+  };
+  const auto try_deliver = [&] {
+    for(;;) {
+      if(delivering.exchange(true))
+        return; // another thread delivers; it checks again for ready items once it is done
+      for(;;) {
+        const std::size_t d = delivered.load(std::memory_order_relaxed);
+        if(d >= limit.load() || ready[d % capacity].load(std::memory_order_acquire) != 1)
+          break;
+        try {
+          deliver(d, slots[d % capacity]);
+        } catch(...) {
+          fail(d, std::current_exception());
+          break;
+        }
+        ready[d % capacity].store(0, std::memory_order_relaxed);
+        delivered.store(d + 1, std::memory_order_release);
+      }
+      delivering.store(false);
+      const std::size_t d = delivered.load();
+      if(d >= limit.load() || ready[d % capacity].load() != 1)
+        return;
+    }
+  };
+  const auto claim = [&]() -> std::size_t {
+    for(;;) {
+      if(stop.load())
+        return n;
+      std::size_t i = next.load();
+      if(i >= n)
+        return n;
+      if(i >= delivered.load(std::memory_order_acquire) + capacity) {
+        try_deliver(); // the slot of item i is still taken: deliver if possible, else wait
+        std::this_thread::yield();
+        continue;
+      }
+      if(next.compare_exchange_weak(i, i + 1))
+        return i;
+    }
+  };
+  const std::size_t workers = (std::min)(threads, n);
+  parallel_for_blocks(workers, 1, workers, [&](std::size_t, std::size_t, std::size_t) {
+    for(std::size_t i = claim(); i < n; i = claim()) {
+      bool go_on = false;
+      try {
+        go_on = compute(i, slots[i % capacity]);
+      } catch(...) {
+        fail(i, std::current_exception());
+        continue;
+      }
+      if(!go_on) {
+        // A stop request: item i and later are not delivered, the earlier ones are.
+        std::size_t seen = limit.load();
+        while(i < seen && !limit.compare_exchange_weak(seen, i)) {
+        }
+        stop.store(true);
+        continue;
+      }
+      ready[i % capacity].store(1, std::memory_order_release);
+      try_deliver();
+    }
+  });
+  try_deliver(); // the items completed last
+  if(error)
+    std::rethrow_exception(error);
+  return delivered.load();
 }
 
 /// `parallel_for_blocks()` with one block per item: `body(i)` for every `i` in `[0, n)`.

@@ -65,7 +65,9 @@ struct Silhouette_frame
 
   Preprocessing (the constructor) copies both meshes into flat arrays and inverts the face map; the
   per-view calls `extract()`, `pick_loops()` and `map_loops()` then run on arrays only, whatever the
-  input data structure. The coarse mesh and the map usually come from `build_coarse_mesh()`
+  input data structure. The preprocessed data never changes afterwards: with one `Workspace` per thread, the
+  `const` overloads of the per-view calls process several views at once (`simplify_silhouette_frames()` does so
+  for a sequence of views). The coarse mesh and the map usually come from `build_coarse_mesh()`
   (header `Coarse_mesh_3.h`), but any coarse mesh and map may be given.
 
   \tparam TriangleMesh a model of `FaceListGraph` with triangle faces (e.g. `Surface_mesh`, `Polyhedron_3`)
@@ -122,6 +124,38 @@ public:
   /// The fine mesh's face descriptor of fine face index `f`.
   face_descriptor fine_face(std::uint32_t f) const { return fine_face_[f]; }
 
+  /*!
+    \brief The scratch memory of the per-view calls (loop decomposition, picking, mapping): about 60 bytes per fine
+    face. The calls that take a workspace are `const`: views may be processed concurrently on one simplifier,
+    with one workspace per thread (see `simplify_silhouette_frames()`). The calls without one use the simplifier's
+    own workspace (one view at a time).
+  */
+  class Workspace
+  {
+  public:
+    explicit Workspace(const Silhouette_simplifier_3& s)
+      : factor_(s.fine_.number_of_halfedges(), 1.0), edge_flag_(s.fine_.number_of_halfedges(), 0),
+        mapper_(new internal::Loop_mapper<Point_3>(&s.fine_, &s.coarse_, &s.cf_begin_, &s.cf_, &s.length_))
+    {
+      mapper_->set_face_map(&s.face_map_, &s.representative_);
+    }
+
+    /// The last dual network built by `map_loops()` with this workspace (for tests and pictures).
+    const internal::Loop_mapper<Point_3>& mapper() const { return *mapper_; }
+
+  private:
+    friend class Silhouette_simplifier_3;
+    std::vector<double> factor_;
+    std::vector<char> edge_flag_;
+    std::vector<Point_3> coarse_points_;
+    std::vector<float> table_;
+    internal::Loop_decomposer decomposer_;
+    std::unique_ptr<internal::Loop_mapper<Point_3>> mapper_;
+  };
+
+  /// A workspace for this simplifier (see `Workspace`).
+  Workspace make_workspace() const { return Workspace(*this); }
+
   /// Silhouette extraction (fine and coarse) without decomposition.
   void extract_silhouettes(const View& view, Silhouette_frame& frame) const
   {
@@ -132,17 +166,19 @@ public:
   }
 
   /// Loop decomposition of both silhouettes of `frame`.
-  void decompose(Silhouette_frame& frame)
+  void decompose(Silhouette_frame& frame) { decompose(frame, *own_); }
+  void decompose(Silhouette_frame& frame, Workspace& ws) const
   {
-    decomposer_(fine_, frame.fine_silhouette, frame.fine_loops);
-    decomposer_(coarse_, frame.coarse_silhouette, frame.coarse_loops);
+    ws.decomposer_(fine_, frame.fine_silhouette, frame.fine_loops);
+    ws.decomposer_(coarse_, frame.coarse_silhouette, frame.coarse_loops);
   }
 
   /// Silhouettes of both meshes and their loop decompositions for `view`.
-  void extract(const View& view, Silhouette_frame& frame)
+  void extract(const View& view, Silhouette_frame& frame) { extract(view, frame, *own_); }
+  void extract(const View& view, Silhouette_frame& frame, Workspace& ws) const
   {
     extract_silhouettes(view, frame);
-    decompose(frame);
+    decompose(frame, ws);
   }
 
   /*!
@@ -152,21 +188,34 @@ public:
   void pick_loops(Silhouette_frame& frame, const Loop_picking_options& options = Loop_picking_options(),
                   const Silhouette_frame* previous = nullptr)
   {
-    if(!(options.threshold >= 0) || !(options.min_relative_gain >= 0) ||
-       !(options.previous_bias > 0 && options.previous_bias <= 1))
-      throw std::invalid_argument("MDCS: Silhouette_simplifier_3::pick_loops: threshold and min_relative_gain must "
-                                  "be >= 0 and previous_bias in (0, 1]");
-    coarse_points_.clear();
+    pick_loops(frame, options, previous, *own_);
+  }
+
+  /// The same with the scratch memory of `ws` (`const`: see `Workspace`).
+  void pick_loops(Silhouette_frame& frame, const Loop_picking_options& options, const Silhouette_frame* previous,
+                  Workspace& ws) const
+  {
+    check_picking_options(options);
+    ws.coarse_points_.clear();
     for(const auto& loop : frame.coarse_loops)
-      for(std::uint32_t h : loop.halfedges) coarse_points_.push_back(coarse_.points[coarse_.source[h]]);
+      for(std::uint32_t h : loop.halfedges) ws.coarse_points_.push_back(coarse_.points[coarse_.source[h]]);
     const std::vector<char>* flags = nullptr;
+    std::vector<std::uint32_t> marked;
     if(previous && options.previous_bias != 1.0) {
-      mark_edges(previous->picked_halfedges());
-      flags = &edge_flag_;
+      marked = previous->picked_halfedges();
+      for(std::uint32_t h : marked) ws.edge_flag_[fine_.edge(h)] = 1;
+      flags = &ws.edge_flag_;
     }
-    frame.picking_error = internal::pick_loops(fine_, coarse_points_, frame.fine_loops, fine_.diagonal, options, flags,
-                                               frame.picked, table_);
-    if(flags) unmark_edges(previous->picked_halfedges());
+    // The flags are cleared on every exit, exceptions included.
+    struct Unmark
+    {
+      const Silhouette_simplifier_3* s;
+      Workspace* ws;
+      const std::vector<std::uint32_t>* hs;
+      ~Unmark() { for(std::uint32_t h : *hs) ws->edge_flag_[s->fine_.edge(h)] = 0; }
+    } unmark{this, &ws, &marked};
+    frame.picking_error = internal::pick_loops(fine_, ws.coarse_points_, frame.fine_loops, fine_.diagonal, options,
+                                               flags, frame.picked, ws.table_);
   }
 
   /*!
@@ -178,38 +227,62 @@ public:
   void map_loops(Silhouette_frame& frame, const Loop_mapping_options& options = Loop_mapping_options(),
                  const Silhouette_frame* previous = nullptr, Engine engine = Engine())
   {
-    if(!(options.alpha > 0 && options.alpha <= 1) || !(options.previous_bias > 0 && options.previous_bias <= 1))
-      throw std::invalid_argument("MDCS: Silhouette_simplifier_3::map_loops: alpha and previous_bias must be in (0, 1]");
+    map_loops(frame, options, previous, engine, *own_);
+  }
+
+  /// The same with the scratch memory of `ws` (`const`: see `Workspace`).
+  template <class Engine>
+  void map_loops(Silhouette_frame& frame, const Loop_mapping_options& options, const Silhouette_frame* previous,
+                 Engine engine, Workspace& ws) const
+  {
+    check_mapping_options(options);
     // Weight factors per canonical edge, reset on every exit (exceptions included).
     std::vector<std::uint32_t> prev;
     if(previous && options.previous_bias != 1.0) prev = previous->mapped_halfedges();
     struct Reset
     {
-      Silhouette_simplifier_3* s;
+      const Silhouette_simplifier_3* s;
+      Workspace* ws;
       const std::vector<std::uint32_t>* a;
       const std::vector<std::uint32_t>* b;
       ~Reset()
       {
-        for(std::uint32_t h : *a) s->factor_[s->fine_.edge(h)] = 1.0;
-        for(std::uint32_t h : *b) s->factor_[s->fine_.edge(h)] = 1.0;
+        for(std::uint32_t h : *a) ws->factor_[s->fine_.edge(h)] = 1.0;
+        for(std::uint32_t h : *b) ws->factor_[s->fine_.edge(h)] = 1.0;
       }
-    } reset{this, &frame.fine_silhouette, &prev};
-    for(std::uint32_t h : frame.fine_silhouette) factor_[fine_.edge(h)] = options.alpha;
-    for(std::uint32_t h : prev) factor_[fine_.edge(h)] *= options.previous_bias;
+    } reset{this, &ws, &frame.fine_silhouette, &prev};
+    for(std::uint32_t h : frame.fine_silhouette) ws.factor_[fine_.edge(h)] = options.alpha;
+    for(std::uint32_t h : prev) ws.factor_[fine_.edge(h)] *= options.previous_bias;
     frame.mapped.clear();
     frame.mapping_reports.clear();
     for(std::size_t i = 0; i < frame.coarse_loops.size(); ++i) {
-      Mapped_loop_report r = mapper_->map(frame.coarse_loops[i], factor_, engine, frame.mapped);
+      Mapped_loop_report r = ws.mapper_->map(frame.coarse_loops[i], ws.factor_, engine, frame.mapped);
       r.coarse_loop = i;
       frame.mapping_reports.push_back(r);
     }
   }
 
+  /// Throws `std::invalid_argument` unless `threshold` and `min_relative_gain` are >= 0 and `previous_bias` in (0, 1].
+  static void check_picking_options(const Loop_picking_options& options)
+  {
+    if(!(options.threshold >= 0) || !(options.min_relative_gain >= 0) ||
+       !(options.previous_bias > 0 && options.previous_bias <= 1))
+      throw std::invalid_argument("MDCS: Silhouette_simplifier_3::pick_loops: threshold and min_relative_gain must "
+                                  "be >= 0 and previous_bias in (0, 1]");
+  }
+
+  /// Throws `std::invalid_argument` unless `alpha` and `previous_bias` are in (0, 1].
+  static void check_mapping_options(const Loop_mapping_options& options)
+  {
+    if(!(options.alpha > 0 && options.alpha <= 1) || !(options.previous_bias > 0 && options.previous_bias <= 1))
+      throw std::invalid_argument("MDCS: Silhouette_simplifier_3::map_loops: alpha and previous_bias must be in (0, 1]");
+  }
+
   /// The weight of fine halfedge `h` without factors (its length).
   double edge_length(std::uint32_t h) const { return length_[h]; }
 
-  /// The last dual network built by `map_loops()` (for tests and pictures).
-  const internal::Loop_mapper<Point_3>& mapper() const { return *mapper_; }
+  /// The last dual network built by `map_loops()` without a workspace (for tests and pictures).
+  const internal::Loop_mapper<Point_3>& mapper() const { return own_->mapper(); }
 
 private:
   template <class CoarseMesh, class CoarseVertexPointMap>
@@ -242,9 +315,6 @@ private:
     for(std::uint32_t h = 0; h < length_.size(); ++h)
       length_[h] = std::sqrt(CGAL::to_double(CGAL::squared_distance(fine_.points[fine_.source[h]],
                                                                     fine_.points[fine_.target(h)])));
-    factor_.assign(fine_.number_of_halfedges(), 1.0);
-    edge_flag_.assign(fine_.number_of_halfedges(), 0);
-    mapper_.reset(new internal::Loop_mapper<Point_3>(&fine_, &coarse_, &cf_begin_, &cf_, &length_));
     // Representative fine face of each coarse face: the one whose centroid is closest to the coarse centroid.
     representative_.assign(coarse_.faces.size(), 0);
     for(std::uint32_t c = 0; c < coarse_.faces.size(); ++c) {
@@ -258,23 +328,16 @@ private:
         if(d < best) { best = d; representative_[c] = cf_[k]; }
       }
     }
-    mapper_->set_face_map(&face_map_, &representative_);
+    own_.reset(new Workspace(*this));
   }
-
-  void mark_edges(const std::vector<std::uint32_t>& hs) { for(std::uint32_t h : hs) edge_flag_[fine_.edge(h)] = 1; }
-  void unmark_edges(const std::vector<std::uint32_t>& hs) { for(std::uint32_t h : hs) edge_flag_[fine_.edge(h)] = 0; }
 
   Indexed_mesh fine_, coarse_;
   std::vector<halfedge_descriptor> fine_halfedge_;
   std::vector<face_descriptor> fine_face_;
   std::vector<vertex_descriptor> fine_vertex_;
   std::vector<std::uint32_t> face_map_, cf_begin_, cf_, representative_;
-  std::vector<double> length_, factor_;
-  std::vector<char> edge_flag_;
-  std::vector<Point_3> coarse_points_;
-  std::vector<float> table_;
-  internal::Loop_decomposer decomposer_;
-  std::unique_ptr<internal::Loop_mapper<Point_3>> mapper_;
+  std::vector<double> length_;
+  std::unique_ptr<Workspace> own_; // the workspace of the calls without one
 };
 
 } // namespace Silhouette_simplification_3

@@ -97,11 +97,16 @@ public:
   /*!
     Builds the arrangement of `planes` in the box. `progress` is a callback `bool(const char* stage, double
     fraction)` called with stage `"arrangement"`; returning `false` throws `CGAL::MDCS::Operation_cancelled`.
+    `threads` (0: all hardware threads; TBB needed) computes the bounding boxes of the cells each insertion creates
+    in parallel, the part of an insertion that is independent (about a fifth of the instructions; the splits
+    themselves share facets between neighbouring cells and stay sequential). The arrangement is the same for every
+    thread count.
     \throws std::invalid_argument if a plane breaks the coefficient bounds of `Lattice_plane_3`, or if the
             arrangement would exceed 2^32 - 2 cells, facets or vertices.
   */
   template <class Progress = CGAL::MDCS::No_progress>
-  explicit Plane_arrangement_3(const std::vector<Lattice_plane_3>& planes, Progress progress = Progress());
+  explicit Plane_arrangement_3(const std::vector<Lattice_plane_3>& planes, Progress progress = Progress(),
+                               std::size_t threads = 1);
 
   /// Inserts one more plane (incremental construction); returns whether it was used.
   bool insert_plane(const Lattice_plane_3& plane);

@@ -6,6 +6,7 @@
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_MINIMIZE_SURFACE_FUNCTIONAL_3_H
 #define CGAL_VARIATIONAL_MINIMIZATION_MINIMIZE_SURFACE_FUNCTIONAL_3_H
 
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Min_cut/internal/contract_terminal_nodes.h>
@@ -22,6 +23,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -142,18 +144,21 @@ Surface_cut_3 surface_min_cut_3(const Plane_arrangement_3& arrangement, const st
 // polygonal domain: 1 byte per facet more).
 // The weights come from a callable; `stage_weights`: the callable computes them (the "network" stage is then
 // reported as "weights").
-template <class WeightOf, class Progress>
-Surface_cut_3 surface_pseudoflow_cut_3(const Plane_arrangement_3& arrangement, const WeightOf& weight_of,
-                                       const Surface_problem_3& problem, Progress& progress, bool stage_weights)
+// `make_graph()` returns the Surface_residual_graph_3; `weight_of(f)` gives the weights of the cut's facets for its
+// value; `network_stage`: the stage reported around make_graph() (none if null).
+template <class MakeGraph, class WeightOf, class Progress>
+Surface_cut_3 surface_pseudoflow_cut_on_graph_3(const Plane_arrangement_3& arrangement, MakeGraph make_graph,
+                                                const WeightOf& weight_of, Progress& progress,
+                                                const char* network_stage)
 {
   typedef Plane_arrangement_3 Arr;
   typedef CGAL::MDCS::internal::Progress_reporter<Progress> Reporter;
   std::vector<char> side;
   Surface_cut_3 out;
   {
-    Reporter network_stage(progress, stage_weights ? "weights" : "network", 1);
-    Surface_residual_graph_3 graph(arrangement, weight_of, problem);
-    network_stage.finish();
+    std::unique_ptr<Reporter> network_reporter(network_stage ? new Reporter(progress, network_stage, 1) : nullptr);
+    Surface_residual_graph_3 graph = make_graph();
+    if(network_reporter) network_reporter->finish();
     Reporter max_flow_stage(progress, "max-flow", 1);
     {
       CGAL::Min_cut::internal::Pseudoflow_solver<double, Surface_residual_graph_3> solver(graph);
@@ -197,6 +202,15 @@ Surface_cut_3 surface_pseudoflow_cut_3(const Plane_arrangement_3& arrangement, c
   }
   out.is_finite = true;
   return out;
+}
+
+template <class WeightOf, class Progress>
+Surface_cut_3 surface_pseudoflow_cut_3(const Plane_arrangement_3& arrangement, const WeightOf& weight_of,
+                                       const Surface_problem_3& problem, Progress& progress, bool stage_weights)
+{
+  return surface_pseudoflow_cut_on_graph_3(
+    arrangement, [&] { return Surface_residual_graph_3(arrangement, weight_of, problem); }, weight_of, progress,
+    stage_weights ? "weights" : "network");
 }
 
 // Pseudoflow with a weight vector.
@@ -303,6 +317,58 @@ Minimal_surface_3 minimize_surface_functional_3(const Plane_arrangement_3& arran
   };
   return internal::surface_from_cut_3(
     arrangement, problem, internal::surface_pseudoflow_cut_3(arrangement, weight_of, problem, progress, true), weight_of);
+}
+
+namespace internal {
+
+// minimize_surface_functional_3() with the facet weights computed on `threads` threads (identical weights for every
+// count): pseudoflow gets them from a weight vector, held only while its residual graph is built (the surface's
+// weights are computed again for its energy, as in the lean path); other engines take the generic path.
+template <class Functional, class Engine, class Progress>
+Minimal_surface_3 minimize_surface_functional_threads_3(const Plane_arrangement_3& arrangement,
+                                                        const Surface_problem_3& problem, const Functional& G,
+                                                        int quadrature_level, std::size_t threads, Engine engine,
+                                                        Progress& progress)
+{
+  problem.validate();
+  if(quadrature_level < 0 || quadrature_level > 8)
+    throw std::invalid_argument("MDCS: minimize_surface_functional_3: quadrature_level must be in [0, 8]");
+  if(threads <= 1) return minimize_surface_functional_3(arrangement, problem, G, quadrature_level, engine, progress);
+  if(!std::is_same<Engine, CGAL::Min_cut::Pseudoflow_max_flow>::value) {
+    const std::vector<double> w = surface_facet_weights_impl_3(arrangement, problem, G, quadrature_level, threads, progress);
+    return minimize_surface_functional_3(arrangement, w, problem, engine, progress);
+  }
+  const auto weight_of = [&](std::uint32_t f) {
+    return surface_facet_weight_3(arrangement, problem, G, f, quadrature_level);
+  };
+  const auto make_graph = [&] {
+    const std::vector<double> w = surface_facet_weights_impl_3(arrangement, problem, G, quadrature_level, threads, progress);
+    return Surface_residual_graph_3(arrangement, [&](std::uint32_t f) { return w[f]; }, problem);
+  };
+  return surface_from_cut_3(arrangement, problem,
+                            surface_pseudoflow_cut_on_graph_3(arrangement, make_graph, weight_of, progress, nullptr),
+                            weight_of);
+}
+
+} // namespace internal
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief `minimize_surface_functional_3(arrangement, problem, G, quadrature_level, engine, progress)` with the facet
+  weights computed on several threads (`ConcurrencyTag` and `threads` as in `surface_facet_weights_3()`; 0: all
+  hardware threads). The weights, hence the surface, are identical for every thread count; the max-flow stays
+  sequential (no parallel min-cut beats the serial pseudoflow codes consistently: Jensen et al., TPAMI 2023).
+  With pseudoflow the weight vector (8 bytes per facet) exists while the residual graph is built, then is freed.
+*/
+template <class ConcurrencyTag, class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine,
+          class Progress = CGAL::MDCS::No_progress>
+Minimal_surface_3 minimize_surface_functional_3(const Plane_arrangement_3& arrangement, const Surface_problem_3& problem,
+                                                const Functional& G, int quadrature_level, std::size_t threads,
+                                                Engine engine = Engine(), Progress progress = Progress())
+{
+  return internal::minimize_surface_functional_threads_3(arrangement, problem, G, quadrature_level,
+                                                         CGAL::MDCS::effective_threads<ConcurrencyTag>(threads), engine,
+                                                         progress);
 }
 
 } // namespace Variational_minimization

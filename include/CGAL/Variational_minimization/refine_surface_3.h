@@ -7,6 +7,7 @@
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_REFINE_SURFACE_3_H
 #define CGAL_VARIATIONAL_MINIMIZATION_REFINE_SURFACE_3_H
 
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Min_cut/internal/contract_terminal_nodes.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
@@ -61,6 +62,8 @@ struct Surface_refinement_result_3
   contracted into the terminals (`network_nodes` and `network_facets` give the smaller network that is solved).
   Every s_r stays feasible, hence the refined energy is at most the best run's (up to the rounding of the weights;
   exactly for closed-form weights). If the runs' optima need more than `n` planes, all are kept (more than `n`).
+  The runs are computed on `options.threads` threads (0: all hardware threads), one run per thread (memory: one
+  arrangement per busy thread); the result does not depend on the thread count.
   `progress` is called with stage `"refinement"`.
   On a polygonal domain the kept planes include the vertical planes of the polygon's edges (they are among the
   first run's pencils), the new planes pass through random points of the envelope over Ω (points of the bounding
@@ -82,21 +85,45 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
   problem.validate();
   CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "refinement", std::size_t(runs) + 1);
   Surface_refinement_result_3 result;
-  std::vector<Minimal_surface_3> surfaces;
+  std::vector<Minimal_surface_3> surfaces(static_cast<std::size_t>(runs));
+  std::vector<std::vector<Lattice_plane_3>> run_planes(static_cast<std::size_t>(runs));
   std::vector<Lattice_plane_3> kept;
-  for(int r = 0; r < runs; ++r) {
-    reporter(std::size_t(r));
+  // The runs are independent: on several threads each runs on one of them (spare threads compute facet weights);
+  // their results are combined below in run order, so nothing depends on the thread count.
+  const std::size_t threads = CGAL::MDCS::effective_threads(options.threads, true);
+  const std::size_t outer = (std::min)(threads, std::size_t(runs)), inner = (std::max)(std::size_t(1), threads / outer);
+  const auto solve_run = [&](std::size_t r) {
     Surface_plane_options_3 o = options;
     o.seed = options.seed + 104729 * std::uint64_t(r);
-    const std::vector<Lattice_plane_3> planes = surface_planes_3(problem, n, o);
-    const Arr arrangement(planes);
-    surfaces.push_back(minimize_surface_functional_3(arrangement, problem, G, quadrature_level, engine));
-    if(!surfaces.back().is_feasible) throw std::invalid_argument("MDCS: refine_surface_3: a run found no surface");
-    result.run_energies.push_back(surfaces.back().energy);
+    run_planes[r] = surface_planes_3(problem, n, o);
+    const Arr arrangement(run_planes[r], CGAL::MDCS::No_progress(), inner);
+    CGAL::MDCS::No_progress none;
+    surfaces[r] = internal::minimize_surface_functional_threads_3(arrangement, problem, G, quadrature_level, inner,
+                                                                  engine, none);
+  };
+  if(outer <= 1) {
+    for(int r = 0; r < runs; ++r) {
+      reporter(std::size_t(r));
+      solve_run(std::size_t(r));
+    }
+  } else {
+    CGAL::MDCS::Parallel_progress<Progress> parallel_reporter(progress, "refinement", std::size_t(runs) + 1);
+    CGAL::MDCS::parallel_for_blocks_lowest_error(std::size_t(runs), 1, outer, [&](std::size_t r, std::size_t, std::size_t) {
+      if(parallel_reporter.cancelled()) return;
+      solve_run(r);
+      parallel_reporter.advance();
+    });
+    if(parallel_reporter.cancelled()) parallel_reporter.finish(); // throws Operation_cancelled
+  }
+  for(int r = 0; r < runs; ++r) {
+    const std::vector<Lattice_plane_3>& planes = run_planes[std::size_t(r)];
+    const Minimal_surface_3& s = surfaces[std::size_t(r)];
+    if(!s.is_feasible) throw std::invalid_argument("MDCS: refine_surface_3: a run found no surface");
+    result.run_energies.push_back(s.energy);
     if(r == 0)
-      for(std::size_t i = 0; i < surface_pencil_count_3(problem, n, o) && i < planes.size(); ++i)
+      for(std::size_t i = 0; i < surface_pencil_count_3(problem, n, options) && i < planes.size(); ++i)
         kept.push_back(planes[i]);
-    for(std::uint32_t p : surfaces.back().planes)
+    for(std::uint32_t p : s.planes)
       if(p >= Arr::number_of_walls) kept.push_back(planes[p - Arr::number_of_walls]);
   }
   // Duplicates are harmless (the arrangement drops them), but they would count against n.
@@ -148,7 +175,7 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
     }
   }
   reporter(std::size_t(runs));
-  const Arr arrangement(result.planes);
+  const Arr arrangement(result.planes, CGAL::MDCS::No_progress(), threads);
   result.cells = arrangement.number_of_cells();
   // Cells outside the widened envelope, by an interior point (the mean of the vertices: no s_r crosses a cell),
   // are contracted into the source (label 1) or the sink (label 2).

@@ -8,6 +8,7 @@
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_REFINE_SURFACE_BY_TANGENT_PLANES_3_H
 #define CGAL_VARIATIONAL_MINIMIZATION_REFINE_SURFACE_BY_TANGENT_PLANES_3_H
 
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
@@ -38,6 +39,9 @@ struct Tangent_refinement_options_3
   int rounds = 12;
   /// The radius of the local fits, as a share of the shorter side of Ω's bounding box.
   double fit_radius = 0.2;
+  /// Threads for the tangent-plane fits and the facet weights of every round (0: all hardware threads; TBB needed,
+  /// else 1). Results do not depend on it.
+  std::size_t threads = 1;
 };
 
 /// The outcome of `refine_surface_by_tangent_planes_3()`.
@@ -74,6 +78,9 @@ struct Tangent_refinement_result_3
   non-smooth G (the blob problem) prefer `select_planes_3()` and `refine_surface_3()`, which keep the planes of the
   optimum.
 
+  The fits and the facet weights of every round run on `tangent_options.threads` threads; the planes and the
+  result do not depend on the thread count (the cell boxes of the arrangement build too; the rest of the build and
+  the max-flow stay sequential).
   `progress` is called with stage `"tangent refinement"`, once per round.
   \throws std::invalid_argument for an invalid problem or functional, `rounds < 0`, a fit radius not in (0, 1],
           `n` not larger than the planes kept from round 0 plus the boundary pencils, or no feasible surface in
@@ -103,6 +110,7 @@ refine_surface_by_tangent_planes_3(const Surface_problem_3& problem, const Funct
   const double radius = tangent_options.fit_radius * (std::min)(problem.domain.xmax() - problem.domain.xmin(),
                                                                  problem.domain.ymax() - problem.domain.ymin());
   const internal::Surface_domain_test_3 inside(problem);
+  const std::size_t threads = CGAL::MDCS::effective_threads(tangent_options.threads, true);
   Tangent_refinement_result_3 result;
   std::vector<Lattice_plane_3> planes = surface_planes_3(problem, n, options);
   const std::vector<Lattice_plane_3> boundary_planes(planes.begin(), planes.begin() + std::ptrdiff_t(kept));
@@ -116,18 +124,35 @@ refine_surface_by_tangent_planes_3(const Surface_problem_3& problem, const Funct
       if(!problem.is_relaxed()) internal::add_fitted_boundary_pencils_3(problem, height, inside, radius, planes);
       internal::Stratified_domain_points_3 points(problem, inside, n - planes.size(),
                                                   options.seed * 0x9E3779B97F4A7C15ull + std::uint64_t(round));
+      // The points are drawn in order, fitted in parallel, and used in order exactly as one loop would: each
+      // batch has as many points as planes are missing (the points drawn beyond the last one used are unused,
+      // and the stream of points is not used afterwards).
       std::size_t failures = 0;
+      std::vector<std::array<double, 2>> batch;
+      std::vector<std::array<double, 3>> fits;
+      std::vector<char> fitted;
       while(planes.size() < n) {
-        const std::array<double, 2> p = points.next();
-        std::array<double, 3> fit;
-        if(internal::fit_tangent_3(height, inside, p[0], p[1], radius, fit))
-          planes.push_back(internal::world_tangent_plane_3(problem, p[0], p[1], fit));
-        else if(++failures > 100 * n)
-          throw std::logic_error("MDCS: refine_surface_by_tangent_planes_3: no tangent plane could be fitted");
+        batch.clear();
+        for(std::size_t k = planes.size(); k < n; ++k) batch.push_back(points.next());
+        fits.assign(batch.size(), std::array<double, 3>{{0, 0, 0}});
+        fitted.assign(batch.size(), 0);
+        CGAL::MDCS::parallel_for_blocks_lowest_error(batch.size(), 16, threads,
+                                                     [&](std::size_t begin, std::size_t end, std::size_t) {
+          for(std::size_t k = begin; k < end; ++k)
+            fitted[k] = internal::fit_tangent_3(height, inside, batch[k][0], batch[k][1], radius, fits[k]) ? 1 : 0;
+        });
+        for(std::size_t k = 0; k < batch.size() && planes.size() < n; ++k) {
+          if(fitted[k])
+            planes.push_back(internal::world_tangent_plane_3(problem, batch[k][0], batch[k][1], fits[k]));
+          else if(++failures > 100 * n)
+            throw std::logic_error("MDCS: refine_surface_by_tangent_planes_3: no tangent plane could be fitted");
+        }
       }
     }
-    const Plane_arrangement_3 arrangement(planes);
-    Minimal_surface_3 s = minimize_surface_functional_3(arrangement, problem, G, quadrature_level, engine);
+    const Plane_arrangement_3 arrangement(planes, CGAL::MDCS::No_progress(), threads);
+    CGAL::MDCS::No_progress none;
+    Minimal_surface_3 s = internal::minimize_surface_functional_threads_3(arrangement, problem, G, quadrature_level,
+                                                                          threads, engine, none);
     result.round_cells.push_back(arrangement.number_of_cells());
     result.round_energies.push_back(s.is_feasible ? s.energy : std::numeric_limits<double>::infinity());
     if(!s.is_feasible) {

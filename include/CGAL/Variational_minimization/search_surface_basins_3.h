@@ -10,6 +10,7 @@
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_SEARCH_SURFACE_BASINS_3_H
 #define CGAL_VARIATIONAL_MINIMIZATION_SEARCH_SURFACE_BASINS_3_H
 
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Min_cut/internal/contract_terminal_nodes.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
@@ -55,6 +56,9 @@ struct Surface_basin_search_options_3
     o.grids = {20, 40};
     return o;
   }();
+  /// Threads (0: all hardware threads; TBB needed, else 1) for the relaxations of the starts and the moves, which
+  /// are evaluated speculatively in parallel batches (see `search_surface_basins_3()`). Results do not depend on it.
+  std::size_t threads = 1;
 };
 
 /// The outcome of `search_surface_basins_3()`.
@@ -123,8 +127,63 @@ inline void check_basin_search_input_3(const Plane_arrangement_3& arrangement, c
     throw std::invalid_argument("MDCS: search_surface_basins_3: the wide shift must be finite and > 0");
 }
 
+// One move of the basin search: tile (ti, tj) of the t x t tiling, surface forced up (+1) or down (-1).
+struct Basin_move_3
+{
+  int t, ti, tj, direction;
+};
+
+// What a move gives against the current relaxed optimum: whether it tied any cell, the constrained discrete
+// optimum and its relaxation (when feasible).
+struct Basin_move_outcome_3
+{
+  bool tied = false;
+  Minimal_surface_3 discrete;
+  Relaxed_surface_3 relaxed;
+};
+
+// Evaluates `move` against `current` (read only): the code of the sequential search, so that a move evaluated on
+// any thread gives the same outcome.
+template <class Functional, class Engine>
+Basin_move_outcome_3 evaluate_basin_move_3(const Plane_arrangement_3& arrangement, const std::vector<double>& weights,
+                                           const Surface_problem_3& problem, const Functional& G,
+                                           const Surface_basin_search_options_3& options, double delta,
+                                           const CGAL::Min_cut::Flow_network<double>& network,
+                                           const std::vector<std::array<double, 3>>& points,
+                                           const Relaxed_surface_3& current, const Basin_move_3& move, Engine engine,
+                                           std::vector<char>& label)
+{
+  Basin_move_outcome_3 out;
+  const double wx = problem.domain.xmax() - problem.domain.xmin(), wy = problem.domain.ymax() - problem.domain.ymin();
+  label.assign(points.size(), 0);
+  std::size_t tied = 0;
+  const int t = move.t;
+  for(std::size_t c = 0; c < points.size(); ++c) {
+    const auto& p = points[c];
+    const int i = (std::min)(t - 1, int(std::floor((p[0] - problem.domain.xmin()) / wx * t)));
+    const int j = (std::min)(t - 1, int(std::floor((p[1] - problem.domain.ymin()) / wy * t)));
+    if(i != move.ti || j != move.tj) continue;
+    const double h = relaxed_height_3(problem, current, p[0], p[1]);
+    if(move.direction > 0 && p[2] < h + delta) label[c] = 1;
+    else if(move.direction < 0 && p[2] > h - delta) label[c] = 2;
+    tied += label[c] != 0;
+  }
+  if(tied == 0) return out;
+  out.tied = true;
+  out.discrete = surface_from_contracted_cut_3(
+    arrangement, problem, weights, CGAL::Min_cut::internal::contract_terminal_nodes(network, label), engine);
+  if(out.discrete.is_feasible) out.relaxed = relax_surface_3(problem, G, out.discrete, options.relaxation);
+  return out;
+}
+
 // One stage of the basin search: sweeps over the moves of `tilings` with the shift `shift` (see
 // search_surface_basins_3()), until a sweep improves nothing or `options.sweeps` are done.
+//
+// On several threads the moves are evaluated speculatively: a batch of consecutive moves is evaluated in parallel
+// against the current optimum, then scanned in order; the first that improves is accepted and the rest of the
+// batch, evaluated against the old optimum, is discarded and evaluated again from the next move on. The moves
+// accepted are therefore exactly those of the sequential search, whatever the number of threads; only the
+// discarded evaluations cost extra (at most one batch per improvement, and improvements are rare).
 template <class Functional, class Engine, class Progress>
 void basin_search_stage_3(const Plane_arrangement_3& arrangement, const std::vector<double>& weights,
                           const Surface_problem_3& problem, const Functional& G,
@@ -133,47 +192,46 @@ void basin_search_stage_3(const Plane_arrangement_3& arrangement, const std::vec
                           const std::vector<std::array<double, 3>>& points, Engine engine, Progress& progress,
                           Surface_basin_search_result_3& result)
 {
-  std::size_t per_sweep = 0;
-  for(int t : tilings) per_sweep += 2 * std::size_t(t) * std::size_t(t);
+  std::vector<Basin_move_3> moves;
+  for(int t : tilings)
+    for(int tj = 0; tj < t; ++tj)
+      for(int ti = 0; ti < t; ++ti)
+        for(int direction : {+1, -1}) moves.push_back(Basin_move_3{t, ti, tj, direction});
+  const std::size_t per_sweep = moves.size();
   if(per_sweep == 0) return;
   const double delta = shift * (problem.zmax - problem.zmin);
-  const double wx = problem.domain.xmax() - problem.domain.xmin(), wy = problem.domain.ymax() - problem.domain.ymin();
-  std::vector<char> label(points.size());
+  const std::size_t threads = CGAL::MDCS::effective_threads(options.threads, true);
+  const std::size_t batch = threads <= 1 ? 1 : threads;
+  std::vector<Basin_move_outcome_3> outcomes(batch);
+  std::vector<std::vector<char>> labels(batch);
   for(int sweep = 0; sweep < options.sweeps; ++sweep) {
     CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "basin search", per_sweep);
     ++result.sweeps;
     bool improved = false;
-    std::size_t move = 0;
-    for(int t : tilings)
-      for(int tj = 0; tj < t; ++tj)
-        for(int ti = 0; ti < t; ++ti)
-          for(int direction : {+1, -1}) {
-            reporter(move++);
-            ++result.moves;
-            std::size_t tied = 0;
-            for(std::size_t c = 0; c < points.size(); ++c) {
-              label[c] = 0;
-              const auto& p = points[c];
-              const int i = (std::min)(t - 1, int(std::floor((p[0] - problem.domain.xmin()) / wx * t)));
-              const int j = (std::min)(t - 1, int(std::floor((p[1] - problem.domain.ymin()) / wy * t)));
-              if(i != ti || j != tj) continue;
-              const double h = relaxed_height_3(problem, result.relaxed, p[0], p[1]);
-              if(direction > 0 && p[2] < h + delta) label[c] = 1;
-              else if(direction < 0 && p[2] > h - delta) label[c] = 2;
-              tied += label[c] != 0;
-            }
-            if(tied == 0) continue;
-            Minimal_surface_3 s = surface_from_contracted_cut_3(
-              arrangement, problem, weights, CGAL::Min_cut::internal::contract_terminal_nodes(network, label), engine);
-            if(!s.is_feasible) continue;
-            Relaxed_surface_3 r = relax_surface_3(problem, G, s, options.relaxation);
-            if(r.energy < result.relaxed.energy * (1 - 1e-9)) {
-              result.relaxed = std::move(r);
-              result.discrete = std::move(s);
-              ++result.improvements;
-              improved = true;
-            }
-          }
+    std::size_t next = 0;
+    while(next < per_sweep) {
+      reporter(next);
+      const std::size_t count = (std::min)(batch, per_sweep - next);
+      CGAL::MDCS::parallel_for_blocks_lowest_error(count, 1, threads, [&](std::size_t k, std::size_t, std::size_t) {
+        outcomes[k] = evaluate_basin_move_3(arrangement, weights, problem, G, options, delta, network, points,
+                                            result.relaxed, moves[next + k], engine, labels[k]);
+      });
+      std::size_t k = 0;
+      for(; k < count; ++k) {
+        ++result.moves;
+        Basin_move_outcome_3& o = outcomes[k];
+        if(!o.tied || !o.discrete.is_feasible) continue;
+        if(o.relaxed.energy < result.relaxed.energy * (1 - 1e-9)) {
+          result.relaxed = std::move(o.relaxed);
+          result.discrete = std::move(o.discrete);
+          ++result.improvements;
+          improved = true;
+          ++k;
+          break; // the later moves of the batch saw the old optimum: evaluate them again
+        }
+      }
+      next += k;
+    }
     reporter.finish();
     if(!improved) break;
   }
@@ -208,7 +266,10 @@ void continue_basin_search_3(const Plane_arrangement_3& arrangement, const std::
   surface that leaves the current basin over that tile. That surface is relaxed; if its relaxed energy is lower,
   it becomes the current optimum (the next moves use it). Sweeps repeat until one improves nothing or
   `options.sweeps` are done. Then a second stage does the same with `options.wide_tilings` and
-  `options.wide_shift` (wider moves; empty `wide_tilings`: none). Deterministic; the relaxed energy never increases. The constrained cuts use
+  `options.wide_shift` (wider moves; empty `wide_tilings`: none). Deterministic; the relaxed energy never increases.
+  On `options.threads` threads the starts are relaxed in parallel and the moves evaluated in parallel batches
+  against the current optimum, scanned in order: the first improving move is accepted and the rest of its batch is
+  evaluated again, so the accepted moves, hence the result, are those of the sequential search. The constrained cuts use
   `CGAL::Min_cut::internal::contract_terminal_nodes` on the full `Flow_network` (built once).
   `progress` is called with stage `"basin search"` (fraction of the moves of the sweep).
   \throws std::invalid_argument for an invalid or polygonal problem, no feasible start, a weight vector of the
@@ -226,12 +287,17 @@ Surface_basin_search_result_3 search_surface_basins_3(const Plane_arrangement_3&
 {
   internal::check_basin_search_input_3(arrangement, weights, problem, options);
   Surface_basin_search_result_3 result;
-  for(const Minimal_surface_3& s : starts) {
-    if(!s.is_feasible) continue;
-    Relaxed_surface_3 r = relax_surface_3(problem, G, s, options.relaxation);
-    if(r.energy < result.relaxed.energy) {
-      result.relaxed = std::move(r);
-      result.discrete = s;
+  // The starts are relaxed independently (in parallel), the best chosen in their order.
+  std::vector<Relaxed_surface_3> relaxed(starts.size());
+  CGAL::MDCS::parallel_for_blocks_lowest_error(starts.size(), 1, CGAL::MDCS::effective_threads(options.threads, true),
+                                               [&](std::size_t k, std::size_t, std::size_t) {
+    if(starts[k].is_feasible) relaxed[k] = relax_surface_3(problem, G, starts[k], options.relaxation);
+  });
+  for(std::size_t k = 0; k < starts.size(); ++k) {
+    if(!starts[k].is_feasible) continue;
+    if(relaxed[k].energy < result.relaxed.energy) {
+      result.relaxed = std::move(relaxed[k]);
+      result.discrete = starts[k];
     }
   }
   if(!(result.relaxed.energy < std::numeric_limits<double>::infinity()))
@@ -259,7 +325,9 @@ struct Relaxed_plane_selection_result_3
   `search_surface_basins_3()` on the arrangement of the best discrete optimum, started from the best relaxed round
   optimum. The answer (`search.relaxed`) has a relaxed energy no higher than the best relaxed round optimum,
   i.e. than plain plane selection with every round relaxed; with `search_options.sweeps = 0` it is exactly that.
-  Deterministic for given options (seed included). `progress` is called with the stages of the two steps.
+  Deterministic for given options (seed included), whatever the thread counts: `plane_options.threads` for the
+  selection's facet weights, `search_options.threads` for the relaxations and the search (the larger of the two for
+  the final arrangement's weights). `progress` is called with the stages of the two steps.
   \throws std::invalid_argument as `select_planes_3()` and `search_surface_basins_3()`.
 */
 template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine,
@@ -277,26 +345,40 @@ Relaxed_plane_selection_result_3 select_planes_relaxed_3(const Surface_problem_3
     throw std::invalid_argument("MDCS: select_planes_relaxed_3: the relaxation needs a rectangular domain");
   Relaxed_plane_selection_result_3 out;
   out.selection = select_planes_3(problem, G, n, rounds, plane_options, 1, engine, progress);
-  const Plane_arrangement_3 arrangement(out.selection.planes);
-  const std::vector<double> w = surface_facet_weights_3(arrangement, problem, G);
+  const Plane_arrangement_3 arrangement(out.selection.planes, CGAL::MDCS::No_progress(),
+                                         CGAL::MDCS::effective_threads(plane_options.threads, true));
+  const std::vector<double> w =
+    surface_facet_weights_3<CGAL::Parallel_if_available_tag>(arrangement, problem, G, 1,
+                                                              (std::max)(CGAL::MDCS::effective_threads(plane_options.threads, true),
+                                                                         CGAL::MDCS::effective_threads(search_options.threads, true)));
   internal::check_basin_search_input_3(arrangement, w, problem, search_options);
   // Relax each distinct round optimum once (an equal discrete energy is the same kept surface).
   std::vector<double> seen, relaxed;
   Surface_basin_search_result_3& result = out.search;
-  for(const Minimal_surface_3& s : out.selection.surfaces) {
-    const std::size_t k = std::size_t(std::find(seen.begin(), seen.end(), s.energy) - seen.begin());
-    if(k == seen.size()) {
-      if(!s.is_feasible) throw std::invalid_argument("MDCS: select_planes_relaxed_3: a round found no surface");
-      Relaxed_surface_3 r = relax_surface_3(problem, G, s, search_options.relaxation);
-      seen.push_back(s.energy);
-      relaxed.push_back(r.energy);
-      if(r.energy < result.relaxed.energy) {
-        result.relaxed = std::move(r);
-        result.discrete = s;
-      }
-    }
-    out.round_relaxed_energies.push_back(relaxed[k]);
+  // The distinct round optima (in round order), relaxed independently (in parallel), then compared in that order.
+  std::vector<std::size_t> distinct;
+  for(std::size_t i = 0; i < out.selection.surfaces.size(); ++i) {
+    const Minimal_surface_3& s = out.selection.surfaces[i];
+    if(std::find(seen.begin(), seen.end(), s.energy) != seen.end()) continue;
+    if(!s.is_feasible) throw std::invalid_argument("MDCS: select_planes_relaxed_3: a round found no surface");
+    seen.push_back(s.energy);
+    distinct.push_back(i);
   }
+  std::vector<Relaxed_surface_3> relaxations(distinct.size());
+  CGAL::MDCS::parallel_for_blocks_lowest_error(
+    distinct.size(), 1, CGAL::MDCS::effective_threads(search_options.threads, true),
+    [&](std::size_t k, std::size_t, std::size_t) {
+      relaxations[k] = relax_surface_3(problem, G, out.selection.surfaces[distinct[k]], search_options.relaxation);
+    });
+  for(std::size_t k = 0; k < distinct.size(); ++k) {
+    relaxed.push_back(relaxations[k].energy);
+    if(relaxations[k].energy < result.relaxed.energy) {
+      result.relaxed = std::move(relaxations[k]);
+      result.discrete = out.selection.surfaces[distinct[k]];
+    }
+  }
+  for(const Minimal_surface_3& s : out.selection.surfaces)
+    out.round_relaxed_energies.push_back(relaxed[std::size_t(std::find(seen.begin(), seen.end(), s.energy) - seen.begin())]);
   internal::continue_basin_search_3(arrangement, w, problem, G, search_options, engine, progress, result);
   return out;
 }

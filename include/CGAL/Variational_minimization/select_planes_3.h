@@ -5,6 +5,7 @@
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_SELECT_PLANES_3_H
 #define CGAL_VARIATIONAL_MINIMIZATION_SELECT_PLANES_3_H
 
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -79,6 +81,8 @@ struct Plane_selection_result_3
   through random points near the current optimum (heights spread by `options.selection_near_spread` times
   zmax - zmin), the rest through the whole box. The optimum of an iteration is therefore available to
   the next one, and the energy cannot increase (up to rounding of quadrature weights; the best is kept anyway).
+  The facet weights of each round are computed on `options.threads` threads (identical results for every count;
+  the cell boxes of the arrangement build too; the rest of the build and the max-flow stay sequential).
   `progress` is called with stage `"plane selection"`.
   \throws std::invalid_argument for an invalid problem or functional, or `iterations < 1`.
 */
@@ -98,13 +102,16 @@ Plane_selection_result_3 select_planes_3(const Surface_problem_3& problem, const
     throw std::invalid_argument("MDCS: select_planes_3: planes near the optimum (selection_near_fraction > 0) need a "
                                 "rectangular domain");
   CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "plane selection", std::size_t(iterations));
+  const std::size_t threads = CGAL::MDCS::effective_threads(options.threads, true);
+  CGAL::MDCS::No_progress no_progress;
   const std::size_t pencils = surface_pencil_count_3(problem, n, options);
   std::vector<Lattice_plane_3> planes = surface_planes_3(problem, n, options);
   Plane_selection_result_3 result;
   for(int it = 0; it < iterations; ++it) {
     reporter(std::size_t(it));
-    const Plane_arrangement_3 arrangement(planes);
-    Minimal_surface_3 s = minimize_surface_functional_3(arrangement, problem, G, quadrature_level, engine);
+    const Plane_arrangement_3 arrangement(planes, CGAL::MDCS::No_progress(), threads);
+    Minimal_surface_3 s = internal::minimize_surface_functional_threads_3(arrangement, problem, G, quadrature_level,
+                                                                          threads, engine, no_progress);
     result.energies.push_back(s.energy);
     result.cells.push_back(arrangement.number_of_cells());
     result.surfaces.push_back(s);
@@ -142,6 +149,75 @@ Plane_selection_result_3 select_planes_3(const Surface_problem_3& problem, const
   }
   reporter.finish();
   return result;
+}
+
+/// The outcome of `select_planes_multistart_3()`.
+struct Plane_selection_multistart_result_3
+{
+  /// The plane selection whose best surface has the lowest energy (ties: the lowest restart).
+  Plane_selection_result_3 best;
+  /// Which restart gave `best`.
+  std::size_t best_restart = 0;
+  /// The energy of each restart's best surface (+infinity if it found none), in the order of the restarts.
+  std::vector<double> restart_energies;
+  /// The seed of each restart.
+  std::vector<std::uint64_t> restart_seeds;
+};
+
+/// The seed of restart `k` of `select_planes_multistart_3()` (restart 0 uses `seed` itself).
+inline std::uint64_t plane_selection_restart_seed_3(std::uint64_t seed, std::size_t k)
+{
+  return seed + 0x9E3779B97F4A7C15ull * std::uint64_t(k);
+}
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief Restarts of plane selection: `restarts` independent runs of `select_planes_3(problem, G, n, iterations,
+  options')`, restart `k` with `options'.seed = plane_selection_restart_seed_3(options.seed, k)` (restart 0 is
+  `select_planes_3()` with `options` itself), and the best of them. Plane selection keeps the planes of its
+  current optimum, so one run tends to stay in the basin it found first; independent draws explore others (the
+  blob problem of the manual needs several).
+
+  The restarts run in parallel on `options.threads` threads (0: all hardware threads), each restart on one thread;
+  with more threads than restarts the spare ones compute facet weights. The result does not depend on the number
+  of threads: every restart is computed by the same sequential code, and the best is chosen in restart order.
+  Memory: one arrangement per busy thread. `progress` is called from the calling thread with stage
+  `"plane selection restarts"` (fraction of the restarts done).
+  \throws std::invalid_argument as `select_planes_3()`, or `restarts < 1` (the error of the lowest failing
+          restart, whatever the thread count).
+*/
+template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine,
+          class Progress = CGAL::MDCS::No_progress>
+Plane_selection_multistart_result_3
+select_planes_multistart_3(const Surface_problem_3& problem, const Functional& G, std::size_t n, int iterations,
+                           std::size_t restarts, const Surface_plane_options_3& options = Surface_plane_options_3(),
+                           int quadrature_level = 1, Engine engine = Engine(), Progress progress = Progress())
+{
+  if(restarts < 1) throw std::invalid_argument("MDCS: select_planes_multistart_3: at least one restart is needed");
+  const std::size_t threads = CGAL::MDCS::effective_threads(options.threads, true);
+  // Spare threads (more threads than restarts) go to the facet weights of each restart.
+  const std::size_t inner = restarts >= threads ? 1 : threads / restarts;
+  std::vector<Plane_selection_result_3> runs(restarts);
+  Plane_selection_multistart_result_3 out;
+  for(std::size_t k = 0; k < restarts; ++k) out.restart_seeds.push_back(plane_selection_restart_seed_3(options.seed, k));
+  CGAL::MDCS::Parallel_progress<Progress> reporter(progress, "plane selection restarts", restarts);
+  CGAL::MDCS::parallel_for_blocks_lowest_error(restarts, 1, (std::min)(threads, restarts),
+                                               [&](std::size_t k, std::size_t, std::size_t) {
+    if(reporter.cancelled()) return;
+    Surface_plane_options_3 o = options;
+    o.seed = out.restart_seeds[k];
+    o.threads = inner;
+    runs[k] = select_planes_3(problem, G, n, iterations, o, quadrature_level, engine);
+    reporter.advance();
+  });
+  reporter.finish();
+  for(std::size_t k = 0; k < restarts; ++k) {
+    const Minimal_surface_3& s = runs[k].surface;
+    out.restart_energies.push_back(s.is_feasible ? s.energy : std::numeric_limits<double>::infinity());
+    if(k == 0 || out.restart_energies[k] < out.restart_energies[out.best_restart]) out.best_restart = k;
+  }
+  out.best = std::move(runs[out.best_restart]);
+  return out;
 }
 
 } // namespace Variational_minimization

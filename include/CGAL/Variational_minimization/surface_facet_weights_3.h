@@ -6,6 +6,7 @@
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_SURFACE_FACET_WEIGHTS_3_H
 #define CGAL_VARIATIONAL_MINIMIZATION_SURFACE_FACET_WEIGHTS_3_H
 
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
@@ -133,6 +134,64 @@ double surface_facet_weight_3(const Plane_arrangement_3& arrangement, const Surf
                                     quadrature_level);
 }
 
+namespace internal {
+
+// Facets per block of the parallel weights: large enough that scheduling costs nothing next to the quadrature,
+// small enough that two threads stay balanced on the smallest arrangements worth it.
+constexpr std::size_t facet_weight_block_3 = 1024;
+
+// On a polygonal domain, whether facet i bounds a cell over the domain (the others weigh 0: G is not evaluated
+// outside the domain).
+inline bool facet_over_domain_3(const Plane_arrangement_3& arrangement, const std::vector<char>& inside, std::size_t i)
+{
+  const Plane_arrangement_3::Facet& F = arrangement.facet(Plane_arrangement_3::Facet_index(i));
+  return (F.negative_cell != Plane_arrangement_3::null_index && inside[F.negative_cell]) ||
+         (F.positive_cell != Plane_arrangement_3::null_index && inside[F.positive_cell]);
+}
+
+template <class Functional, class Progress>
+std::vector<double> surface_facet_weights_impl_3(const Plane_arrangement_3& arrangement,
+                                                 const Surface_problem_3& problem, const Functional& G,
+                                                 int quadrature_level, std::size_t threads, Progress& progress)
+{
+  problem.validate();
+  if(quadrature_level < 0 || quadrature_level > 8)
+    throw std::invalid_argument("MDCS: surface_facet_weights_3: quadrature_level must be in [0, 8]");
+  const std::size_t n = arrangement.number_of_facets();
+  std::vector<double> w(n, 0.0);
+  // A polygonal domain: facets of cells outside Ω only get weight 0 (G is not evaluated outside Ω).
+  const bool polygonal = problem.is_polygonal();
+  const std::vector<char> inside = polygonal ? internal::surface_domain_cells_3(arrangement, problem)
+                                             : std::vector<char>();
+  if(threads <= 1) {
+    CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "weights", n);
+    for(std::size_t i = 0; i < n; ++i) {
+      reporter(i);
+      if(polygonal && !facet_over_domain_3(arrangement, inside, i)) continue;
+      w[i] = surface_facet_weight_3(arrangement, problem, G, Plane_arrangement_3::Facet_index(i), quadrature_level);
+    }
+    reporter.finish();
+    return w;
+  }
+  // Each block writes its own facets' weights only, with the sequential code: the same weights for every thread
+  // count. Only the calling thread reports progress.
+  CGAL::MDCS::Parallel_progress<Progress> reporter(progress, "weights", n);
+  CGAL::MDCS::parallel_for_blocks_lowest_error(n, facet_weight_block_3, threads,
+                                               [&](std::size_t begin, std::size_t end, std::size_t) {
+    if(reporter.cancelled()) return;
+    for(std::size_t i = begin; i < end; ++i) {
+      if(polygonal && !facet_over_domain_3(arrangement, inside, i)) continue;
+      w[i] = surface_facet_weight_3(arrangement, problem, G, Plane_arrangement_3::Facet_index(i), quadrature_level);
+    }
+    reporter.advance(end - begin);
+  });
+  reporter.finish();
+  return w;
+}
+
+} // namespace internal
+
+
 /*!
   \ingroup PkgVariationalMinimizationSurfaces
   \brief The weight of every facet of `arrangement` for the functional `G` (a model of `SurfaceFunctional_3`).
@@ -147,28 +206,27 @@ std::vector<double> surface_facet_weights_3(const Plane_arrangement_3& arrangeme
                                             const Functional& G, int quadrature_level = 1,
                                             Progress progress = Progress())
 {
-  problem.validate();
-  if(quadrature_level < 0 || quadrature_level > 8)
-    throw std::invalid_argument("MDCS: surface_facet_weights_3: quadrature_level must be in [0, 8]");
-  const std::size_t n = arrangement.number_of_facets();
-  std::vector<double> w(n, 0.0);
-  CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "weights", n);
-  // A polygonal domain: facets of cells outside Ω only get weight 0 (G is not evaluated outside Ω).
-  const bool polygonal = problem.is_polygonal();
-  const std::vector<char> inside = polygonal ? internal::surface_domain_cells_3(arrangement, problem)
-                                             : std::vector<char>();
-  for(std::size_t i = 0; i < n; ++i) {
-    reporter(i);
-    if(polygonal) {
-      const Plane_arrangement_3::Facet& F = arrangement.facet(Plane_arrangement_3::Facet_index(i));
-      const bool in = (F.negative_cell != Plane_arrangement_3::null_index && inside[F.negative_cell]) ||
-                      (F.positive_cell != Plane_arrangement_3::null_index && inside[F.positive_cell]);
-      if(!in) continue;
-    }
-    w[i] = surface_facet_weight_3(arrangement, problem, G, Plane_arrangement_3::Facet_index(i), quadrature_level);
-  }
-  reporter.finish();
-  return w;
+  return internal::surface_facet_weights_impl_3(arrangement, problem, G, quadrature_level, 1, progress);
+}
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  \brief `surface_facet_weights_3()` on several threads: `ConcurrencyTag` is `CGAL::Sequential_tag`,
+  `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag` (TBB), `threads` the number of threads (0: all
+  hardware threads). The facets are cut into fixed blocks and every weight is computed by the same code as in the
+  sequential call, so the weights are identical (bit for bit) for every thread count; so is the error, if any (that
+  of the lowest failing facet). `G` is then called from several threads at once: its call operator (and
+  `facet_integral()`) must be safe for concurrent calls on a const object (every functional of this package is;
+  `Monte_carlo_functional_3` gives each facet its own random stream, seeded by the facet's geometry, so its weights
+  do not depend on the schedule either). `progress` is called from the calling thread only.
+*/
+template <class ConcurrencyTag, class Functional, class Progress = CGAL::MDCS::No_progress>
+std::vector<double> surface_facet_weights_3(const Plane_arrangement_3& arrangement, const Surface_problem_3& problem,
+                                            const Functional& G, int quadrature_level, std::size_t threads,
+                                            Progress progress = Progress())
+{
+  return internal::surface_facet_weights_impl_3(arrangement, problem, G, quadrature_level,
+                                                CGAL::MDCS::effective_threads<ConcurrencyTag>(threads), progress);
 }
 
 } // namespace Variational_minimization

@@ -50,6 +50,9 @@ struct Surface_plane_options_3
   /// `select_planes_3()` only: the spread of those points' heights about the optimum (standard deviation, as a
   /// share of zmax - zmin).
   double selection_near_spread = 0.1;
+  /// `select_planes_3()`, `select_planes_multistart_3()` and `refine_surface_3()` only: threads for the facet
+  /// weights and the independent runs (0: all hardware threads; TBB needed, else 1). Results do not depend on it.
+  std::size_t threads = 1;
 };
 
 namespace internal {

@@ -7,6 +7,7 @@
 #ifndef CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_PLANE_ARRANGEMENT_CONSTRUCTION_3_H
 #define CGAL_VARIATIONAL_MINIMIZATION_INTERNAL_PLANE_ARRANGEMENT_CONSTRUCTION_3_H
 
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/internal/plane_arrangement_predicates_3.h>
 
@@ -31,7 +32,8 @@ class Plane_arrangement_builder_3
   static constexpr std::uint32_t null = Arrangement::null_index;
 
 public:
-  explicit Plane_arrangement_builder_3(Arrangement& a) : a_(a) {}
+  // `threads`: for the bounding boxes of the cells an insertion creates (the independent part of an insertion).
+  explicit Plane_arrangement_builder_3(Arrangement& a, std::size_t threads = 1) : a_(a), threads_(threads) {}
 
   void init_box()
   {
@@ -95,6 +97,7 @@ public:
         split_cell(c);
         used = true;
       }
+    finish_leaves();
     a_.used_[h_] = used ? 1 : 0;
     split_vertices_.clear();
     return used;
@@ -308,8 +311,30 @@ private:
     a_.nodes_[node].child[1] = ln + 1;
     a_.node_of_cell_[c] = ln;
     a_.node_of_cell_.push_back(ln + 1);
-    set_leaf(ln, c);
-    set_leaf(ln + 1, cp);
+    defer_leaf(ln, c);
+    defer_leaf(ln + 1, cp);
+  }
+
+  // The new leaves of an insertion get their boxes once every crossed cell is split (nothing reads them before the
+  // next insertion): each box depends on its own cell only, so they are computed in parallel on large insertions,
+  // with the same code and into their own nodes, hence the same tree for every thread count.
+  void defer_leaf(std::uint32_t node, std::uint32_t cell)
+  {
+    typename Arrangement::Tree_node& n = a_.nodes_[node];
+    n.child[0] = null;
+    n.child[1] = cell;
+    pending_leaves_.push_back({{node, cell}});
+  }
+
+  void finish_leaves()
+  {
+    const std::size_t n = pending_leaves_.size();
+    const auto boxes = [&](std::size_t begin, std::size_t end, std::size_t) {
+      for(std::size_t k = begin; k < end; ++k) cell_box(pending_leaves_[k][1], a_.nodes_[pending_leaves_[k][0]]);
+    };
+    if(threads_ > 1 && n >= 1024) CGAL::MDCS::parallel_for_blocks(n, 256, threads_, boxes);
+    else boxes(0, n, 0);
+    pending_leaves_.clear();
   }
 
   void replace_cell(std::uint32_t f, std::uint32_t from, std::uint32_t to)
@@ -408,6 +433,8 @@ private:
   static double upper_bound(std::uint16_t h) { return h == 0xFFFF ? double(Arrangement::lattice_size) : double(h); }
 
   Arrangement& a_;
+  std::size_t threads_;
+  std::vector<std::array<std::uint32_t, 2>> pending_leaves_; // node, cell
   std::uint32_t h_ = 0;
   std::unordered_map<std::uint64_t, std::uint32_t> split_vertices_;
   std::vector<Chord> chords_;
@@ -424,9 +451,10 @@ inline Plane_arrangement_3::Plane_arrangement_3()
 }
 
 template <class Progress>
-Plane_arrangement_3::Plane_arrangement_3(const std::vector<Lattice_plane_3>& planes, Progress progress)
+Plane_arrangement_3::Plane_arrangement_3(const std::vector<Lattice_plane_3>& planes, Progress progress,
+                                         std::size_t threads)
 {
-  internal::Plane_arrangement_builder_3<Plane_arrangement_3> builder(*this);
+  internal::Plane_arrangement_builder_3<Plane_arrangement_3> builder(*this, CGAL::MDCS::effective_threads(threads, true));
   builder.init_box();
   CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "arrangement", planes.size());
   for(std::size_t i = 0; i < planes.size(); ++i) {
