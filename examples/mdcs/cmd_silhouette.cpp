@@ -65,7 +65,8 @@ int run_silhouette_command(Invocation& run)
   const double seconds_read = seconds_since(t_read);
   const auto folder = prepare_output_folder(o.text("output"));
   Run_summary sum = run_silhouette(fine, p, folder, run.progress);
-  sum.report += "  threads: " + threads_text(run.threads) + "\n";
+  sum.report += "  threads: " + threads_text(run.threads) + "\n  summary: " + (folder / "summary.txt").string() + " " +
+                (folder / "summary.json").string() + "\n";
   std::cout << sum.report;
   const int code = sum.consistent ? EXIT_OK : EXIT_FAILURE_RUNTIME;
   write_text_file((folder / "summary.txt").string(), sum.report);
