@@ -131,7 +131,12 @@ struct Run_summary_json
   {
     Json_object o, opts, threads;
     o.add("command", run.command).add("version", std::string(mdcs_version())).raw("arguments", json_strings(run.arguments));
-    for(const auto& kv : run.options.effective()) opts.add(kv.first, kv.second);
+    // Typed: flags as booleans, integers and reals as numbers, lists as arrays of numbers, the rest as strings.
+    for(const auto& v : run.options.effective()) {
+      if(v.kind == Option_kind::flag || v.kind == Option_kind::integer || v.kind == Option_kind::real) opts.raw(v.name, v.text);
+      else if(v.kind == Option_kind::list) opts.raw(v.name, json_numbers(run.options.list(v.name)));
+      else opts.add(v.name, v.text);
+    }
     o.add("options", opts);
     threads.add("requested", (unsigned long long)run.threads.requested()).add("used", (unsigned long long)run.threads.used())
       .add("parallel_support", Thread_limit::parallel());

@@ -285,16 +285,23 @@ public:
 
   const std::vector<std::string>& positional() const { return positional_; }
 
-  // Every option of the table with its effective value, in table order (flags: "true"/"false"; no default and
-  // not given: absent). For the summaries.
-  std::vector<std::pair<std::string, std::string>> effective() const
+  struct Effective_value
   {
-    std::vector<std::pair<std::string, std::string>> all;
+    std::string name;
+    Option_kind kind;
+    std::string text; // flags: "true" / "false"
+  };
+
+  // Every option of the table with its effective value, in table order (an option without default that is not
+  // given is left out). For the summaries.
+  std::vector<Effective_value> effective() const
+  {
+    std::vector<Effective_value> all;
     if(!spec_) return all;
     for(const Option_spec& o : spec_->options) {
       if(o.name == "help" || o.name == "version") continue;
-      if(o.kind == Option_kind::flag) all.emplace_back(o.name, given_.count(o.name) ? "true" : "false");
-      else if(given_.count(o.name) || !o.fallback.empty()) all.emplace_back(o.name, value(o.name));
+      if(o.kind == Option_kind::flag) all.push_back({o.name, o.kind, given_.count(o.name) ? "true" : "false"});
+      else if(given_.count(o.name) || !o.fallback.empty()) all.push_back({o.name, o.kind, value(o.name)});
     }
     return all;
   }

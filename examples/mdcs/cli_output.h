@@ -178,8 +178,9 @@ inline std::filesystem::path prepare_output_folder(const std::string& folder)
   return std::filesystem::path(folder);
 }
 
-// Writes a PNG copy of an SVG picture with rsvg-convert when it is installed; returns whether it did. The program
-// runs without a shell (no quoting of the paths), its PNG written as .part and renamed only when it succeeded.
+// Writes a PNG copy of an SVG picture with rsvg-convert when it is installed; returns whether it did (false: not
+// installed). The program runs without a shell (no quoting of the paths); its PNG is written as .part and renamed
+// only when it succeeded; a failure (a full disk) throws std::runtime_error like any other failed write.
 inline bool svg_to_png(const std::filesystem::path& svg)
 {
   std::filesystem::path png = svg;
@@ -199,11 +200,17 @@ inline bool svg_to_png(const std::filesystem::path& svg)
   if(spawned != 0) return false; // not installed
   int status = 0;
   while(::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+  if(WIFEXITED(status) && WEXITSTATUS(status) == 127) { // posix_spawnp's child found no program to run
+    ::unlink(part.c_str());
+    return false;
+  }
   std::error_code ec;
   const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && std::filesystem::file_size(part, ec) > 0 && !ec;
   if(!ok || std::rename(part.c_str(), png.string().c_str()) != 0) {
     ::unlink(part.c_str());
-    return false;
+    throw std::runtime_error("cannot write '" + png.string() + "': rsvg-convert failed" +
+                             (WIFEXITED(status) ? " with exit code " + std::to_string(WEXITSTATUS(status)) : std::string(" (killed)")) +
+                             " (--no-picture skips the pictures)");
   }
   return true;
 }

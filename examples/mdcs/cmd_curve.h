@@ -43,7 +43,7 @@ inline Command_spec curve_command_spec()
     integer_option("n", "N", "", 1, 40, "regular grids: C_n parameter (default 12 for regular, at most 40: n^5 edges;\n"
                    "default 2 for regular-pl, at most 6: about n^5 lines)"),
     real_option("pencil-fraction", "F", "0.1", 0, 1, "random grid: share of the lines through each fixed end point"),
-    integer_option("seed", "S", "1", 0, 4294967295.0, "random seed"),
+    integer_option("seed", "S", "1", 0, 4294967295.0, "random seed (of the lines and of the blob density)"),
     text_option("engine", "E", "planar", "min-cut engine: planar (a shortest path in the dual) | pf (pseudoflow) |\n"
                 "pr (push-relabel) | bk (Boykov-Kolmogorov)", {"planar", "pf", "pr", "bk"}),
     flag_option("no-local", "skip the local-descent comparison"),
@@ -126,8 +126,9 @@ inline Curve_settings parse_curve_settings(const Parsed_options& o)
   if(o.given("right")) s.right = parse_end(o.text("right"), "right", ymin, ymax);
   s.grid = o.text("grid");
   if(s.grid != "random") {
-    for(const char* name : {"lines", "pencil-fraction", "seed"})
+    for(const char* name : {"lines", "pencil-fraction"})
       if(o.given(name)) throw Usage_error(std::string("--") + name + " applies to --grid random only");
+    if(o.given("seed") && s.functional != "blobs") throw Usage_error("--seed applies to --grid random or --functional blobs");
   } else if(o.given("n")) {
     throw Usage_error("--n applies to --grid regular or regular-pl");
   }

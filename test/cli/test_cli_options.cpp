@@ -161,10 +161,10 @@ TEST_CASE("cli options: help and effective values come from the table", "[cli][o
   CHECK(help.find("--shorten-paths") != std::string::npos);
   const auto effective = parse({"--levels", "3"}).effective();
   bool levels = false, flag = false;
-  for(const auto& kv : effective) {
-    if(kv.first == "levels") levels = kv.second == "3";
-    if(kv.first == "compare-exact") flag = kv.second == "false";
-    CHECK(kv.first != "limit"); // no default, not given
+  for(const auto& v : effective) {
+    if(v.name == "levels") levels = v.text == "3" && v.kind == Option_kind::integer;
+    if(v.name == "compare-exact") flag = v.text == "false";
+    CHECK(v.name != "limit"); // no default, not given
   }
   CHECK(levels);
   CHECK(flag);
