@@ -506,11 +506,12 @@ inline Geodesics_run run_geodesics(const Geodesics_settings& s, const Progress_b
   Geo_mesh mesh;
   std::vector<std::string> notes;
   progress.begin("reading the mesh");
-  load_geodesics_mesh(s.mesh, mesh, notes);
+  const bool repaired = load_geodesics_mesh(s.mesh, mesh, notes, s.repair);
   progress.end();
   for(const std::string& note : notes) std::cerr << "mdcs geodesics: note: " << note << "\n";
   const double seconds_read = seconds_since(t0);
-  const std::string name = s.mesh[0] == '@' ? s.mesh.substr(1) + " (generated)" : std::filesystem::path(s.mesh).filename().string();
+  const std::string name = s.mesh[0] == '@' ? s.mesh.substr(1) + " (generated)"
+                           : std::filesystem::path(s.mesh).filename().string() + (repaired ? " (repaired by CGAL's soup repair)" : "");
   return run_geodesics_on(mesh, name, notes, seconds_read, s, progress);
 }
 

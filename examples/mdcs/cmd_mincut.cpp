@@ -13,17 +13,22 @@ Command_spec mincut_spec()
   s.name = "mincut";
   s.synopsis = "FILE [options]";
   s.description =
-    "Reads a max-flow problem in DIMACS format ('p max N M', 'n ID s', 'n ID t', 'a U V CAP'), computes the maximum\n"
-    "flow / minimum cut with the Min_cut component and prints the value and the size of the source side.\n";
+    "Reads a max-flow problem in DIMACS format ('p max N M', 'n ID s', 'n ID t', 'a U V CAP', 'c' comments),\n"
+    "computes the maximum flow / minimum cut with the Min_cut component and prints the value and the size of the\n"
+    "source side. The file is checked line by line (one 'p' line first, one source, one sink, node ids in 1..N,\n"
+    "finite capacities >= 0, exactly M arcs): any problem exits 3 with the line and the reason.\n";
   s.positionals = {{"FILE", "a DIMACS max-flow file"}};
   s.min_positionals = s.max_positionals = 1;
   s.options = {
     text_option("engine", "E", "pf", "max-flow engine: pf (pseudoflow), pr (push-relabel) or bk (Boykov-Kolmogorov;\n"
                                      "Boost.Graph, 32-bit CSR)", {"pf", "pr", "bk"}),
-    text_option("sides", "OUT", "", "write one line per node: 'ID S' (source side) or 'ID T'"),
+    text_option("sides", "OUT", "", "write 'ID S' (source side) or 'ID T' for every node that a line of the file\n"
+                "mentions; nodes no line mentions are isolated and on the sink side: a first line\n"
+                "'c ...' counts them"),
   };
   add_common_options(s, Common_options{"", true, false});
-  s.notes = "With --output DIR: DIR/summary.json (the value, the counts, the engine, the times) and DIR/sides.txt.\n";
+  s.notes = "With --output DIR: DIR/summary.json (the value, the counts, the engine, the times) and DIR/sides.txt\n"
+            "(as --sides).\n";
   return s;
 }
 
@@ -32,7 +37,11 @@ namespace {
 void write_sides(const std::string& path, const Mincut_report& r)
 {
   Output_file out(path);
-  for(std::size_t i = 0; i < r.on_source_side.size(); ++i) out << i + 1 << (r.on_source_side[i] ? " S\n" : " T\n");
+  // Nodes that no line of the file mentions are isolated, on the sink side, and not listed (see Mincut_report).
+  if(r.sides.size() < r.nodes)
+    out << "c " << r.nodes - r.sides.size() << " of the " << r.nodes << " nodes appear in no line of the input: they are "
+        << "isolated, on the sink side (T), and not listed\n";
+  for(const auto& side : r.sides) out << side.first << (side.second ? " S\n" : " T\n");
   out.commit();
 }
 

@@ -5,90 +5,61 @@
 #include "cli_common.h"
 
 #include <CGAL/Min_cut.h>
+#include <CGAL/Min_cut/IO/read_dimacs_max_flow.h>
 #include <CGAL/Variational_minimization.h>
 #include <CGAL/Variational_minimization/internal/curve_dual_network_2.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <utility>
 
 namespace mdcs_cli {
 
 struct Mincut_report
 {
   double value = 0;
-  std::size_t nodes = 0, arcs = 0, source_side = 0;
+  std::uint64_t nodes = 0; // as the 'p' line announces
+  std::size_t arcs = 0, source_side = 0;
   double seconds = 0;
-  std::vector<char> on_source_side; // per DIMACS node (0-based)
+  // The side of every node some line of the file mentions (DIMACS id, 1: source side), in increasing id order.
+  // The others (`nodes` minus these) are isolated and on the sink side: they are not listed, so that memory
+  // and the --sides file follow the size of the input, not the node count the 'p' line announces.
+  std::vector<std::pair<std::uint64_t, char>> sides;
 };
 
+// Reads a DIMACS max-flow file with the library's distrustful reader (CGAL::Min_cut::IO::read_dimacs_max_flow:
+// exit 3 with the line and the problem for every malformed file) and solves it on the nodes the file mentions.
 inline Mincut_report solve_dimacs_file(const std::string& path, const std::string& engine)
 {
-  std::ifstream in(path);
-  if(!in) throw Input_error("cannot open '" + path + "'");
-  typedef CGAL::Min_cut::Flow_network<double> Network;
-  Network network;
-  long n = -1, m = -1, s = -1, t = -1, line_number = 0, arcs = 0;
-  double direct = 0; // arcs source -> sink: always saturated
-  struct Arc { long u, v; double c; };
-  std::vector<Arc> pending;
-  std::string line;
-  auto fail = [&](const std::string& what) {
-    throw Input_error(path + ":" + std::to_string(line_number) + ": " + what);
-  };
-  while(std::getline(in, line)) {
-    ++line_number;
-    if(line.empty() || line[0] == 'c') continue;
-    std::istringstream ls(line);
-    char kind;
-    ls >> kind;
-    if(kind == 'p') {
-      std::string problem;
-      if(!(ls >> problem >> n >> m) || problem != "max" || n < 2 || m < 0) fail("expected 'p max NODES ARCS'");
-    } else if(kind == 'n') {
-      long id;
-      char which;
-      if(n < 0) fail("'n' line before the 'p max' line");
-      if(!(ls >> id >> which) || id < 1 || id > n || (which != 's' && which != 't')) fail("expected 'n ID s' or 'n ID t'");
-      (which == 's' ? s : t) = id;
-    } else if(kind == 'a') {
-      long u, v;
-      double c;
-      if(n < 0) fail("'a' line before the 'p max' line");
-      if(!(ls >> u >> v >> c) || u < 1 || u > n || v < 1 || v > n) fail("expected 'a U V CAPACITY' with 1 <= U, V <= " + std::to_string(n));
-      if(!(c >= 0) || !std::isfinite(c)) fail("capacities must be finite and >= 0");
-      pending.push_back({u, v, c});
-      ++arcs;
-    } else {
-      fail(std::string("unknown line type '") + kind + "'");
-    }
-  }
-  if(n < 0) throw Input_error(path + ": no 'p max' line: not a DIMACS max-flow file");
-  if(s < 0 || t < 0) throw Input_error(path + ": the source ('n ID s') or the sink ('n ID t') is missing");
-  if(s == t) throw Input_error(path + ": the source and the sink are the same node");
-  if(arcs != m) std::cerr << "mdcs mincut: warning: the 'p' line announces " << m << " arcs, the file has " << arcs << "\n";
-
-  network.add_nodes(std::size_t(n));
-  for(const Arc& a : pending) {
-    if(a.u == a.v || a.v == s || a.u == t) continue; // cannot carry s-t flow
-    if(a.u == s && a.v == t) direct += a.c;
-    else if(a.u == s) network.add_source_facet(Network::Node_index(a.v - 1), a.c, 0);
-    else if(a.v == t) network.add_sink_facet(Network::Node_index(a.u - 1), a.c, 0);
-    else network.add_facet(Network::Node_index(a.u - 1), Network::Node_index(a.v - 1), a.c, 0, 0);
+  namespace MIO = CGAL::Min_cut::IO;
+  MIO::Dimacs_max_flow_problem problem;
+  MIO::Dimacs_flow_network<double> flow;
+  try {
+    problem = MIO::read_dimacs_max_flow(path);
+    flow = MIO::make_flow_network<double>(problem, path);
+  } catch(const CGAL::MDCS::IO::Read_error& e) {
+    throw Input_error(e.what());
   }
   Mincut_report report;
-  report.nodes = std::size_t(n);
-  report.arcs = std::size_t(arcs);
+  report.nodes = problem.number_of_nodes;
+  report.arcs = problem.arcs.size();
   const auto t0 = std::chrono::steady_clock::now();
+  const auto& network = flow.network;
   const auto cut = engine == "bk"   ? CGAL::Min_cut::solve_min_cut(network, CGAL::Min_cut::Boykov_kolmogorov_max_flow())
                    : engine == "pr" ? CGAL::Min_cut::solve_min_cut(network, CGAL::Min_cut::Push_relabel_max_flow())
                                     : CGAL::Min_cut::solve_min_cut(network, CGAL::Min_cut::Pseudoflow_max_flow());
   report.seconds = seconds_since(t0);
-  report.value = cut.value + direct;
-  report.on_source_side = cut.on_source_side;
-  report.on_source_side[std::size_t(s - 1)] = 1;
-  report.on_source_side[std::size_t(t - 1)] = 0;
-  for(char c : report.on_source_side) report.source_side += c ? 1 : 0;
+  report.value = cut.value + flow.source_to_sink;
+  // The mentioned nodes in id order: the network's nodes (sorted ids), the source and the sink.
+  report.sides.reserve(flow.node_ids.size() + 2);
+  for(std::size_t i = 0; i < flow.node_ids.size(); ++i) report.sides.emplace_back(flow.node_ids[i], cut.on_source_side[i]);
+  report.sides.emplace_back(problem.source, char(1));
+  report.sides.emplace_back(problem.sink, char(0));
+  std::sort(report.sides.begin(), report.sides.end());
+  for(const auto& side : report.sides) report.source_side += side.second ? 1 : 0;
   return report;
 }
 

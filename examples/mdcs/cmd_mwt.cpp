@@ -14,7 +14,8 @@ Command_spec mwt_spec()
   s.description =
     "Minimum weight triangulation by the triangle-based LP (diamond-test pruning, certificate, branch and bound when\n"
     "the LP optimum is fractional), or by the LMT-skeleton pipeline (--lmt).\n";
-  s.positionals = {{"POINTS", "text file, one point 'x y' (or 'x,y') per line, '#' comments, an optional header line"}};
+  s.positionals = {{"POINTS", "text file, one point per line: 'x y', 'x,y' or 'x;y' (finite numbers), '#' comments, blank\n"
+                              "lines, an optional first line of words ('x,y'); anything else exits 3 with the line"}};
   s.min_positionals = 0;
   s.max_positionals = 1;
   s.options = {

@@ -6,6 +6,7 @@
 #include "cli_common.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/MDCS/IO/read_points.h>
 #include <CGAL/Minimum_weight_triangulation_2.h>
 
 #include <algorithm>
@@ -29,33 +30,18 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point;
 namespace MWT = CGAL::Minimum_weight_triangulation_2;
 
-// "x y" or "x,y" per line; '#' starts a comment; an optional header line of words is skipped.
+// The points file of `mdcs mwt` through the library's distrustful reader (CGAL::MDCS::IO::read_points_2): one
+// point per line, "x y", "x,y" or "x;y", '#' comments, an optional header line of words; anything else (a
+// third coordinate, nan, inf, trailing text) exits 3 with the line. A file without points is refused too.
 inline std::vector<Point> read_points(const std::string& path)
 {
-  std::ifstream in(path);
-  if(!in) throw Input_error("cannot open '" + path + "'");
   std::vector<Point> p;
-  std::string line;
-  int number = 0;
-  while(std::getline(in, line)) {
-    ++number;
-    const auto hash = line.find('#');
-    if(hash != std::string::npos) line.erase(hash);
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::replace(line.begin(), line.end(), ';', ' ');
-    std::istringstream s(line);
-    std::string a, b;
-    if(!(s >> a)) continue;
-    if(!(s >> b)) throw Input_error(path + ":" + std::to_string(number) + ": expected two coordinates");
-    char* e1 = nullptr;
-    char* e2 = nullptr;
-    const double x = std::strtod(a.c_str(), &e1), y = std::strtod(b.c_str(), &e2);
-    if(*e1 != '\0' || *e2 != '\0') {
-      if(p.empty() && number == 1) continue;   // header
-      throw Input_error(path + ":" + std::to_string(number) + ": '" + a + " " + b + "' are not numbers");
-    }
-    p.emplace_back(x, y);
+  try {
+    CGAL::MDCS::IO::read_points_2(path, p);
+  } catch(const CGAL::MDCS::IO::Read_error& e) {
+    throw Input_error(e.what());
   }
+  if(p.empty()) throw Input_error(path + ": the file holds no point");
   return p;
 }
 

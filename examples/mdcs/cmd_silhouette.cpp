@@ -16,8 +16,8 @@ Command_spec silhouette_spec()
     "Simplified silhouette of a triangle mesh (thesis chapter 5). A coarse mesh (half-edge collapses, smoothing)\n"
     "guides the choice of fine silhouette loops (picking, method A) or the minimal-weight loops of fine edges that\n"
     "follow the coarse silhouette loops (mapping, method B, min cut).\n";
-  s.positionals = {{"MESH", "OFF, PLY, OBJ or STL (repaired / triangulated when needed, with a note), or the generated\n"
-                            "@torus / @icosphere"}};
+  s.positionals = {{"MESH", "OFF, PLY, OBJ or STL, a valid oriented manifold mesh (otherwise refused, exit 3, saying\n"
+                            "why; larger faces are triangulated, with a note), or the generated @torus / @icosphere"}};
   s.min_positionals = s.max_positionals = 1;
   s.options = {
     list_option("view", "A,E", "30,20", 2, 2, -3600, 3600, "perspective eye at azimuth A and elevation E degrees (E in (-90, 90)),\n"
@@ -29,6 +29,8 @@ Command_spec silhouette_spec()
     real_option("alpha", "A", "0.1", 0, 1, "weight factor of fine silhouette edges in loop mapping", true),
     integer_option("frames", "N", "0", 0, 3600, "also a rotation of N frames (frames.csv, frame_NNN.svg) and the temporal-\n"
                    "coherence metric with and without the previous-frame remedy"),
+    flag_option("repair", "run CGAL's soup repair on a file that is not a valid mesh instead of refusing it (it\n"
+                "changes the surface; said on stderr, in the summaries and in the pictures' titles)"),
   };
   add_common_options(s, Common_options{"silhouette_out", true, true});
   s.notes =
@@ -61,7 +63,9 @@ int run_silhouette_command(Invocation& run)
   const std::string path = o.positional().front();
   p.name = path[0] == '@' ? path.substr(1) + " (generated)" : std::filesystem::path(path).filename().string();
   const auto t_read = std::chrono::steady_clock::now();
-  const Mesh fine = read_triangle_mesh(path);
+  bool repaired = false;
+  const Mesh fine = read_triangle_mesh(path, o.flag("repair"), &repaired);
+  if(repaired) p.name += " (repaired by CGAL's soup repair)";
   const double seconds_read = seconds_since(t_read);
   const auto folder = prepare_output_folder(o.text("output"));
   Run_summary sum = run_silhouette(fine, p, folder, run.progress);
@@ -73,7 +77,7 @@ int run_silhouette_command(Invocation& run)
   Run_summary_json json;
   json.files = sum.files;
   json.files.push_back((folder / "summary.txt").string());
-  json.inputs.add("mesh", path).add("faces", (unsigned long long)sum.fine_faces).add("vertices", (unsigned long long)fine.number_of_vertices());
+  json.inputs.add("mesh", path).add("repaired", repaired).add("faces", (unsigned long long)sum.fine_faces).add("vertices", (unsigned long long)fine.number_of_vertices());
   json.timings.add("read", seconds_read).add("preprocessing", sum.preprocess_s).add("extraction", sum.extract_ms / 1e3)
     .add("picking", sum.picking_ms / 1e3).add("mapping", sum.mapping_ms / 1e3).add("rotation", sum.rotation_s)
     .add("temporal_coherence", sum.coherence_s).add("output", sum.output_s);

@@ -371,11 +371,12 @@ inline Run_summary run_silhouette(const Mesh& fine, const Run_parameters& p, con
 
 // The mesh reader of the mesh commands (mesh_input.h): OFF / PLY / OBJ / STL, repaired and triangulated when
 // needed (with a note on stderr), or the generated @torus / @icosphere.
-inline Mesh read_triangle_mesh(const std::string& path)
+inline Mesh read_triangle_mesh(const std::string& path, bool repair = false, bool* repaired = nullptr)
 {
   Mesh m;
   std::vector<std::string> notes;
-  load_geodesics_mesh(path, m, notes);
+  const bool was_repaired = load_geodesics_mesh(path, m, notes, repair);
+  if(repaired) *repaired = was_repaired;
   for(const std::string& note : notes) std::cerr << "mdcs silhouette: note: " << note << "\n";
   return m;
 }

@@ -20,7 +20,17 @@ bool demo_silhouette(const std::filesystem::path& folder, bool quick, const Prog
   Run_parameters p;
   bool generated = false;
   const std::string name = quick ? "elephant.off" : "bunny00.off";
-  if(!dir.empty() && CGAL::IO::read_polygon_mesh(dir + "/" + name, fine) && num_faces(fine) > 0 && CGAL::is_triangle_mesh(fine)) {
+  bool read = false;
+  if(!dir.empty()) {
+    try {
+      std::vector<std::string> notes;
+      load_geodesics_mesh(dir + "/" + name, fine, notes);
+      read = num_faces(fine) > 0;
+    } catch(const Input_error&) {
+      read = false;
+    }
+  }
+  if(read) {
     p.name = name;
     if(!quick) {
       // The thesis's setting: a 20,000-face bunny and a 1,000-face coarse mesh.

@@ -89,6 +89,7 @@ struct Geodesics_settings
   bool picture = true;
   bool export_data = true; // paths.json/.csv, isolines.csv (the demo's runs skip them)
   std::string threads;      // for the summary (empty: not printed)
+  bool repair = false;      // --repair: CGAL's soup repair on a file that is not a valid mesh
 };
 
 inline Command_spec geodesics_command_spec()
@@ -100,10 +101,12 @@ inline Command_spec geodesics_command_spec()
     "Geodesic distances on a triangle mesh from one or more sources (CGAL::Polyhedral_geodesics_3: exact interval\n"
     "propagation by default, or an approximate method), shortest paths to targets, a picture, and the results as\n"
     "data: every distance (PLY, 17 significant digits), the paths and the iso-distance lines (JSON, CSV).\n";
-  s.positionals = {{"MESH", "OFF, PLY, OBJ or STL file, or @torus / @icosphere (generated meshes). Files that are not a\n"
-                            "valid polygon mesh are repaired (CGAL's soup repair), faces with more than three corners\n"
-                            "are triangulated; both with a note on stderr. Indices refer to the mesh as used, which\n"
-                            "distances.ply lists (the file's own order for a valid triangle mesh)."}};
+  s.positionals = {{"MESH", "OFF, PLY, OBJ or STL file, or @torus / @icosphere (generated meshes). The file must be a\n"
+                            "valid oriented manifold mesh: otherwise mdcs refuses it (exit 3) and says why (an edge\n"
+                            "shared by 3 faces, a pinched vertex, inconsistent orientation, a Moebius strip, an index\n"
+                            "out of range, ...). Faces with more than three corners are triangulated (with a note).\n"
+                            "Vertex indices are the file's; face indices the file's for a triangle mesh\n"
+                            "(distances.ply lists the mesh as used)."}};
   s.min_positionals = s.max_positionals = 1;
   s.options = {
     text_option("source", "SPEC", "", "comma-separated sources (required): vertex indices (0,17) and/or surface points\n"
@@ -130,6 +133,9 @@ inline Command_spec geodesics_command_spec()
     flag_option("compare-exact", "also run the exact method (same sources and limits); report its time and the error of\n"
                 "--method: mean relative error (thesis eq. 4.4.1), max relative and absolute error"),
     flag_option("compare-cgal", "also run CGAL::Surface_mesh_shortest_path; report the largest difference and both times"),
+    flag_option("repair", "run CGAL's soup repair on a file that is not a valid mesh instead of refusing it; it\n"
+                "changes the surface (merges, reorients, cuts non-manifold parts open): said on stderr,\n"
+                "in summary.txt and summary.json, and indices then refer to the repaired mesh"),
   };
   add_common_options(s, Common_options{"mdcs-output", true, true});
   s.notes =
@@ -139,8 +145,9 @@ inline Command_spec geodesics_command_spec()
     "isolines.csv (iso-distance polylines: level, line, position, x, y, z), geodesics.svg/.png (not with\n"
     "--no-picture), summary.txt, summary.json.\n"
     "Exit codes: 2 for a malformed or out-of-range --source/--targets, an unknown --method or a surface-point source\n"
-    "with the heat method; 3 for a mesh that cannot be read, has no face or cannot be triangulated, or that the heat\n"
-    "method cannot handle; 1 when a result fails its check (a distance that is not finite, a source not at 0).\n";
+    "with the heat method; 3 for a mesh file that is malformed (the message names the line or element), is not a\n"
+    "valid oriented manifold mesh (without --repair), has no face, or that the heat method cannot handle; 1 when a result fails its\n"
+    "check (a distance that is not finite, a source not at 0).\n";
   return s;
 }
 
@@ -171,6 +178,7 @@ inline Geodesics_settings parse_geodesics_settings(const Parsed_options& o)
     throw Usage_error("--shorten-paths needs paths: not with the heat method or --memory distances");
   s.output = o.text("output");
   s.picture = !o.flag("no-picture");
+  s.repair = o.flag("repair");
   s.mesh = o.positional().front();
   return s;
 }

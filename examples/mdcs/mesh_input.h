@@ -1,6 +1,7 @@
-// Triangle meshes for the mdcs commands: the mesh type, reading OFF / PLY / OBJ / STL with CGAL's repair when the
-// file is not a valid polygon mesh as is, triangulation of larger faces, and generated meshes (@torus,
-// @icosphere) for machines without CGAL's data.
+// Triangle meshes for the mdcs commands: the mesh type, reading OFF / PLY / OBJ / STL through the library's
+// distrustful readers (CGAL::MDCS::IO::read_triangle_mesh: the surface as the file gives it, or a refusal that
+// says why; CGAL's soup repair only with --repair), triangulation of larger faces, and generated meshes
+// (@torus, @icosphere) for machines without CGAL's data.
 #ifndef MDCS_CLI_MESH_INPUT_H
 #define MDCS_CLI_MESH_INPUT_H
 
@@ -9,10 +10,8 @@
 #include "geodesic_render.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/MDCS/IO/read_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <array>
 #include <cmath>
@@ -101,50 +100,38 @@ inline void make_icosphere_mesh(Geo_mesh& m, int levels)
   add_outward_triangles(m, points, f);
 }
 
-// Reads MESH (or generates @torus / @icosphere); repairs and triangulates when needed, noting it in `notes`.
-inline void load_geodesics_mesh(const std::string& path, Geo_mesh& mesh, std::vector<std::string>& notes)
+// The hint of a refusal: how to ask for the repair.
+inline const char* repair_hint()
+{
+  return "pass --repair to run CGAL's soup repair instead (it changes the surface: results are then for the repaired one)";
+}
+
+// Reads MESH (or generates @torus / @icosphere). A file that is a valid oriented manifold mesh is used as it is
+// (the file's vertex and face order; larger faces triangulated, with a note); any other file is refused
+// (Input_error, exit 3, saying why) unless `repair` is set, which runs CGAL's soup repair and notes it in
+// `notes` (the commands print the notes on stderr and write them into their outputs). Returns whether it repaired.
+inline bool load_geodesics_mesh(const std::string& path, Geo_mesh& mesh, std::vector<std::string>& notes, bool repair = false)
 {
   mesh.clear();
   if(path == "@torus") {
     make_torus_mesh(mesh, 1.0, 0.4, 96, 40);
-    return;
+    return false;
   }
   if(path == "@icosphere") {
     make_icosphere_mesh(mesh, 4);
-    return;
+    return false;
   }
-  std::error_code ec;
-  if(!std::filesystem::is_regular_file(path, ec)) throw Input_error("cannot open '" + path + "'");
-  bool ok = false;
+  CGAL::MDCS::IO::Triangle_mesh_reading_options options;
+  options.repair = repair;
+  options.refusal_hint = repair_hint();
   try {
-    ok = CGAL::IO::read_polygon_mesh(path, mesh);
-  } catch(const std::exception&) {
-    ok = false;
-  }
-  if(!ok || faces(mesh).empty()) {
-    // Not a valid polygon mesh as is (e.g. non-manifold, or a polygon soup): CGAL's repair and orientation.
-    mesh.clear();
-    bool repaired = false;
-    try {
-      repaired = CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(path, mesh);
-    } catch(const std::exception&) {
-      repaired = false;
-    }
-    if(!repaired)
-      throw Input_error("cannot read a polygon mesh from '" + path + "' (OFF, PLY, OBJ or STL; not a polygon mesh even after repair)");
-    if(!faces(mesh).empty())
-      notes.push_back("the file is not a valid polygon mesh as is: it was repaired and oriented (CGAL::Polygon_mesh_processing::IO::"
-                      "read_polygon_mesh); vertex and face indices refer to the repaired mesh (the one the command writes out)");
-  }
-  if(faces(mesh).empty()) throw Input_error("'" + path + "' has no face");
-  if(mesh.has_garbage()) mesh.collect_garbage();
-  if(!CGAL::is_triangle_mesh(mesh)) {
-    const std::size_t before = mesh.number_of_faces();
-    if(!CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
-      throw Input_error("'" + path + "' has faces that cannot be triangulated");
-    if(mesh.has_garbage()) mesh.collect_garbage();
-    notes.push_back("faces with more than three corners were triangulated (" + std::to_string(before) + " -> " +
-                    std::to_string(mesh.number_of_faces()) + " faces); face indices refer to the triangulated mesh");
+    const CGAL::MDCS::IO::Triangle_mesh_reading_report report = CGAL::MDCS::IO::read_triangle_mesh(path, mesh, options);
+    notes.insert(notes.end(), report.notes.begin(), report.notes.end());
+    if(repair && !report.repaired)
+      notes.push_back("--repair was given, but the file is a valid oriented manifold mesh: nothing was repaired");
+    return report.repaired;
+  } catch(const CGAL::MDCS::IO::Read_error& e) {
+    throw Input_error(e.what());
   }
 }
 
