@@ -295,12 +295,12 @@ TEST_CASE("fuzz: 200 mutated files per format through the reading path of mdcs",
   fuzz(200, 28);
 }
 
-TEST_CASE("fuzz: 1,000 mutated files per format (long)", "[io][fuzz][.long]")
+TEST_CASE("fuzz: 1000 mutated files per format (long)", "[io][fuzz][.long]")
 {
   fuzz(1000, 28);
 }
 
-TEST_CASE("fuzz: 20,000 mutated files per format (long)", "[io][fuzz][.long]")
+TEST_CASE("fuzz: 20000 mutated files per format (long)", "[io][fuzz][.long]")
 {
   fuzz(20000, 20261201);
 }
