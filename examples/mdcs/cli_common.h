@@ -1,163 +1,164 @@
-// Shared pieces of the mdcs command-line tool: options, errors with exit codes, the progress bar, output files.
+// Shared pieces of the mdcs command-line tool: errors with exit codes, the options every sub-command has
+// (--output, --no-picture, --threads, --quiet, --heartbeat, --help, --version), the thread limit, and the
+// machine-readable summary (summary.json) every run writes.
 #ifndef MDCS_CLI_COMMON_H
 #define MDCS_CLI_COMMON_H
 
-#include <algorithm>
+#include "cli_json.h"
+#include "cli_options.h"
+#include "cli_output.h"
+#include "cli_progress.h"
+
+#include <CGAL/MDCS/concurrency.h>
+
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
-#include <unistd.h>
+
+#ifndef MDCS_VERSION
+#define MDCS_VERSION "unknown"
+#endif
 
 namespace mdcs_cli {
 
-// Exit codes, documented in `mdcs --help`.
-enum Exit_code { EXIT_OK = 0, EXIT_FAILURE_RUNTIME = 1, EXIT_USAGE = 2, EXIT_BAD_INPUT = 3, EXIT_INFEASIBLE = 4 };
+inline const char* mdcs_version() { return MDCS_VERSION; }
 
-// A wrong command line: printed with the command's usage, exit code 2.
-struct Usage_error : std::runtime_error { using std::runtime_error::runtime_error; };
+// A malformed or unusable input file or input data: exit code 3.
+struct Input_error : std::runtime_error { using std::runtime_error::runtime_error; };
 
-// Options of the form --name value, --name=value and --flag; everything else is positional.
-class Options
-{
-public:
-  Options(int argc, char** argv, int first, const std::vector<std::string>& flags)
-  {
-    for(int i = first; i < argc; ++i) {
-      std::string a = argv[i];
-      if(a.size() > 2 && a[0] == '-' && a[1] == '-') {
-        std::string name = a.substr(2), value;
-        const auto eq = name.find('=');
-        if(eq != std::string::npos) {
-          value = name.substr(eq + 1);
-          name = name.substr(0, eq);
-        } else if(std::find(flags.begin(), flags.end(), name) != flags.end()) {
-          value = "1";
-        } else {
-          if(i + 1 >= argc) throw Usage_error("option --" + name + " needs a value");
-          value = argv[++i];
-        }
-        values_[name] = value;
-      } else if(a == "-h") {
-        values_["help"] = "1";
-      } else {
-        positional_.push_back(a);
-      }
-    }
-  }
-
-  bool has(const std::string& name) const { return values_.count(name) != 0; }
-
-  std::string text(const std::string& name, const std::string& fallback) const
-  {
-    used_.push_back(name);
-    auto it = values_.find(name);
-    return it == values_.end() ? fallback : it->second;
-  }
-
-  double number(const std::string& name, double fallback) const
-  {
-    const std::string s = text(name, "");
-    if(s.empty()) return fallback;
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if(end == s.c_str() || *end != '\0') throw Usage_error("option --" + name + ": '" + s + "' is not a number");
-    return v;
-  }
-
-  long integer(const std::string& name, long fallback, long min_value) const
-  {
-    const std::string s = text(name, "");
-    if(s.empty()) return fallback;
-    char* end = nullptr;
-    const long v = std::strtol(s.c_str(), &end, 10);
-    if(end == s.c_str() || *end != '\0') throw Usage_error("option --" + name + ": '" + s + "' is not an integer");
-    if(v < min_value) throw Usage_error("option --" + name + " must be >= " + std::to_string(min_value));
-    return v;
-  }
-
-  const std::vector<std::string>& positional() const { return positional_; }
-
-  // Rejects options that no one asked for (typos), after the command has read its options.
-  void reject_unknown() const
-  {
-    for(const auto& kv : values_)
-      if(kv.first != "help" && std::find(used_.begin(), used_.end(), kv.first) == used_.end())
-        throw Usage_error("unknown option --" + kv.first);
-  }
-
-private:
-  std::map<std::string, std::string> values_;
-  std::vector<std::string> positional_;
-  mutable std::vector<std::string> used_;
-};
-
-// A progress bar on stderr: redrawn in place on a terminal, one line per finished stage otherwise (logs, CI).
-class Progress_bar
-{
-public:
-  explicit Progress_bar(bool quiet = false) : quiet_(quiet), tty_(isatty(fileno(stderr)) != 0) {}
-
-  bool operator()(const char* stage, double fraction)
-  {
-    if(quiet_) return true;
-    const auto now = std::chrono::steady_clock::now();
-    if(stage_ != stage) {
-      stage_ = stage;
-      start_ = now;
-      last_ = -1;
-    }
-    const int percent = int(fraction * 100.0 + 0.5);
-    if(percent == last_) return true;
-    last_ = percent;
-    const double seconds = std::chrono::duration<double>(now - start_).count();
-    if(tty_) {
-      const int width = 30, filled = percent * width / 100;
-      std::fprintf(stderr, "\r  %-14s [%.*s%*s] %3d%%  %.1fs", stage, filled, "##############################",
-                   width - filled, "", percent, seconds);
-      if(percent >= 100) std::fprintf(stderr, "\n");
-    } else if(percent >= 100) {
-      std::fprintf(stderr, "  %-14s done in %.2fs\n", stage, seconds);
-    }
-    std::fflush(stderr);
-    return true;
-  }
-
-private:
-  bool quiet_, tty_;
-  std::string stage_;
-  int last_ = -1;
-  std::chrono::steady_clock::time_point start_;
-};
+// A result that failed its check before it was reported (non-finite, absurd): exit code 1.
+struct Result_error : std::runtime_error { using std::runtime_error::runtime_error; };
 
 inline double seconds_since(std::chrono::steady_clock::time_point t0)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-inline std::filesystem::path prepare_output_folder(const std::string& folder)
+// ------------------------------------------------------------------------------------------------------------
+// Options shared by the sub-commands, appended to each table.
+
+struct Common_options
 {
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  if(ec || !std::filesystem::is_directory(folder))
-    throw std::runtime_error("cannot create the output folder '" + folder + "': " + ec.message());
-  return std::filesystem::path(folder);
+  std::string output_default; // "": the command has no output folder unless --output is given
+  bool output = true;         // the command has --output
+  bool picture = true;        // the command draws pictures (--no-picture)
+};
+
+inline void add_common_options(Command_spec& spec, const Common_options& c)
+{
+  if(c.output)
+    spec.options.push_back(text_option("output", "DIR", c.output_default,
+                                       c.output_default.empty() ? "also write the output files, summary.json included, into DIR"
+                                                                : "output folder (created if needed)"));
+  if(c.picture)
+    spec.options.push_back(flag_option("no-picture", "write no SVG / PNG picture (the data files only; large meshes draw slowly)"));
+  spec.options.push_back(integer_option("threads", "N", "0", 0, 1024,
+                                        "threads for the parallel stages (0: every hardware thread; 1: sequential)"));
+  spec.options.push_back(flag_option("quiet", "no progress lines on stderr (results, warnings and errors are still printed)"));
+  spec.options.push_back(real_option("heartbeat", "S", "10", 0.1, 86400,
+                                     "seconds between progress lines when stderr is not a terminal (logs)"));
+  spec.options.push_back(flag_option("help", "this help"));
+  spec.options.push_back(flag_option("version", "the version of mdcs"));
 }
 
-// Writes a PNG copy of an SVG picture when rsvg-convert is installed; returns whether it did.
-inline bool svg_to_png(const std::filesystem::path& svg)
+// ------------------------------------------------------------------------------------------------------------
+// The thread count of a run (--threads): the limit holds for every TBB loop of the process, the library's
+// (CGAL/MDCS/concurrency.h) and CGAL's own; the count is also passed to the entry points that take one.
+
+class Thread_limit
 {
-  if(std::system("command -v rsvg-convert >/dev/null 2>&1") != 0) return false;
-  std::filesystem::path png = svg;
-  png.replace_extension(".png");
-  const std::string cmd = "rsvg-convert -w 1000 -b white -o '" + png.string() + "' '" + svg.string() + "' 2>/dev/null";
-  return std::system(cmd.c_str()) == 0;
+public:
+  explicit Thread_limit(std::size_t requested)
+    : requested_(requested), used_(CGAL::MDCS::effective_threads(requested, true))
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    control_ = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, used_);
+#endif
+  }
+  std::size_t requested() const { return requested_; }
+  std::size_t used() const { return used_; }
+  static constexpr bool parallel() { return CGAL::MDCS::has_parallel_support(); }
+
+private:
+  std::size_t requested_, used_;
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> control_;
+#endif
+};
+
+inline std::string threads_text(const Thread_limit& t)
+{
+  return std::to_string(t.used()) + (t.requested() == 0 ? " (--threads 0: every hardware thread)" : "") +
+         (Thread_limit::parallel() ? "" : " (built without TBB: sequential)");
 }
+
+// ------------------------------------------------------------------------------------------------------------
+// One run of a sub-command: its options, thread limit, progress display, and what goes into summary.json.
+
+struct Invocation
+{
+  Invocation(const Command_spec& spec, int argc, char** argv, int first)
+    : command(spec.name), options(parse_command_line(spec, argc, argv, first)),
+      threads(std::size_t(options.integer("threads"))),
+      progress(options.flag("quiet"), options.real("heartbeat")), start(std::chrono::steady_clock::now())
+  {
+    for(int i = first; i < argc; ++i) arguments.push_back(argv[i]);
+  }
+
+  bool quiet() const { return options.flag("quiet"); }
+  bool picture() const { return !options.flag("no-picture"); }
+
+  std::string command;
+  std::vector<std::string> arguments;
+  Parsed_options options;
+  Thread_limit threads;
+  Progress_bar progress;
+  std::chrono::steady_clock::time_point start;
+};
+
+// summary.json: what ran (command, version, arguments, every option's effective value, threads), on what
+// (inputs), how long (timings, seconds), what came out (results), notes and the files written.
+struct Run_summary_json
+{
+  Json_object inputs, timings, results;
+  std::vector<std::string> notes, files;
+
+  std::string text(const Invocation& run, int exit_code) const
+  {
+    Json_object o, opts, threads;
+    o.add("command", run.command).add("version", std::string(mdcs_version())).raw("arguments", json_strings(run.arguments));
+    // Typed: flags as booleans, integers and reals as numbers, lists as arrays of numbers, the rest as strings.
+    for(const auto& v : run.options.effective()) {
+      if(v.kind == Option_kind::flag || v.kind == Option_kind::integer || v.kind == Option_kind::real) opts.raw(v.name, v.text);
+      else if(v.kind == Option_kind::list) opts.raw(v.name, json_numbers(run.options.list(v.name)));
+      else opts.add(v.name, v.text);
+    }
+    o.add("options", opts);
+    threads.add("requested", (unsigned long long)run.threads.requested()).add("used", (unsigned long long)run.threads.used())
+      .add("parallel_support", Thread_limit::parallel());
+    o.add("threads", threads);
+    o.add("inputs", inputs);
+    Json_object t = timings;
+    t.add("total", seconds_since(run.start));
+    o.add("timings_seconds", t);
+    o.add("results", results);
+    o.raw("notes", json_strings(notes));
+    o.raw("files", json_strings(files));
+    o.add("exit_code", exit_code);
+    return o.text() + "\n";
+  }
+
+  // Writes `path` (listed among the files first).
+  void write(const std::string& path, const Invocation& run, int exit_code)
+  {
+    files.push_back(path);
+    write_text_file(path, text(run, exit_code));
+  }
+};
 
 } // namespace mdcs_cli
 

@@ -1,4 +1,6 @@
-// `mdcs curve`: globally minimal discrete curves (univariate variational problems).
+// `mdcs curve`: globally minimal discrete curves (univariate variational problems): the option table, the run
+// (arrangement, weights, min-cut, the shortest-path oracle, analytic optima where known, a local descent), its
+// checks and its files (NAME.csv, NAME.svg/.png, NAME_summary.txt, NAME_summary.json).
 #ifndef MDCS_CLI_CMD_CURVE_H
 #define MDCS_CLI_CMD_CURVE_H
 
@@ -8,8 +10,9 @@
 #include <CGAL/Variational_minimization.h>
 
 #include <cmath>
-#include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -17,29 +20,41 @@ namespace mdcs_cli {
 
 namespace VM = CGAL::Variational_minimization;
 
-inline const char* curve_usage()
+inline Command_spec curve_command_spec()
 {
-  return
-    "usage: mdcs curve [options]\n"
+  Command_spec s;
+  s.name = "curve";
+  s.synopsis = "[options]";
+  s.description =
     "Minimise F(f) = integral of G(f, f', x) dx globally over the functions of a line arrangement (min-cut of the\n"
-    "directed dual graph), check the result with the independent shortest-path oracle, and draw it.\n"
-    "  --functional NAME   catenoid (surface of rotation, default) | arc-length | blobs (length weighted by a\n"
-    "                      density of Gaussian blobs: many local minima)\n"
-    "  --radius R          catenoid: rings of radius R at x = -1 and 1 (default 2); box [-1,1]x[0,R]\n"
-    "  --box A,B,YMIN,YMAX domain [A,B] and value range (other functionals; default 0,1,0,1)\n"
-    "  --left V|LO:HI      left end value, fixed or relaxed (default 0.5; catenoid: R)\n"
-    "  --right V|LO:HI     right end value (default 0.5; catenoid: R)\n"
-    "  --grid KIND         random (default) | regular (C_n, dynamic programming) | regular-pl (C_n^pl, cut)\n"
-    "  --lines N           random lines (default 1600)\n"
-    "  --n N               regular grids: C_n parameter (default 12 for regular, 2 for regular-pl)\n"
-    "  --pencil-fraction F share of the random lines through each fixed end point (default 0.1)\n"
-    "  --seed S            random seed (default 1)\n"
-    "  --engine planar|pf|pr|bk  min-cut engine: the planar cut (default; a shortest path in the dual), or the\n"
-    "                      max-flow engines pseudoflow, push-relabel or Boykov-Kolmogorov\n"
-    "  --no-local          skip the local-descent comparison\n"
-    "  --output DIR        output folder (default mdcs-output); files NAME.svg/.png/.csv/_summary.txt\n"
-    "  --name NAME         base name of the output files (default curve)\n"
-    "  --quiet             no progress bar\n";
+    "directed dual graph), check the result with the independent shortest-path oracle, and draw it.\n";
+  s.options = {
+    text_option("functional", "NAME", "catenoid", "catenoid (surface of rotation) | arc-length | blobs (length weighted by\n"
+                "a density of Gaussian blobs: many local minima)", {"catenoid", "arc-length", "blobs"}),
+    real_option("radius", "R", "2", 0, 1e6, "catenoid: rings of radius R at x = -1 and 1; box [-1,1] x [0,R]", true),
+    list_option("box", "A,B,YMIN,YMAX", "0,1,0,1", 4, 4, -1e9, 1e9, "arc-length, blobs: domain [A,B] and value range"),
+    text_option("left", "V|LO:HI", "", "left end value, fixed (V) or free in [LO,HI] (default 0.5; catenoid: R; inside\n"
+                "the value range)"),
+    text_option("right", "V|LO:HI", "", "right end value (default 0.5; catenoid: R); each end keeps its default unless given"),
+    text_option("grid", "KIND", "random", "random | regular (C_n, dynamic programming) | regular-pl (C_n^pl, cut)",
+                {"random", "regular", "regular-pl"}),
+    integer_option("lines", "N", "1600", 1, 10000, "random lines (the arrangement has about N^2/2 vertices, 125 bytes each:\n"
+                   "10000 lines take about 6 GB)"),
+    integer_option("n", "N", "", 1, 40, "regular grids: C_n parameter (default 12 for regular, at most 40: n^5 edges;\n"
+                   "default 2 for regular-pl, at most 6: about n^5 lines)"),
+    real_option("pencil-fraction", "F", "0.1", 0, 1, "random grid: share of the lines through each fixed end point"),
+    integer_option("seed", "S", "1", 0, 4294967295.0, "random seed (of the lines and of the blob density)"),
+    text_option("engine", "E", "planar", "min-cut engine: planar (a shortest path in the dual) | pf (pseudoflow) |\n"
+                "pr (push-relabel) | bk (Boykov-Kolmogorov)", {"planar", "pf", "pr", "bk"}),
+    flag_option("no-local", "skip the local-descent comparison"),
+    text_option("name", "NAME", "curve", "base name of the output files (a plain file name)"),
+  };
+  add_common_options(s, Common_options{"mdcs-output", true, true});
+  s.notes =
+    "Files in the output folder: NAME.csv (the curve: x,f with 17 significant digits), NAME.svg (.png with\n"
+    "rsvg-convert; not with --no-picture), NAME_summary.txt, NAME_summary.json.\n"
+    "Exit code 4: no function on this grid meets the end conditions (add lines through the end points).\n";
+  return s;
 }
 
 struct Curve_settings
@@ -47,18 +62,18 @@ struct Curve_settings
   std::string functional = "catenoid";
   double radius = 2;
   CGAL::Bbox_2 box = CGAL::Bbox_2(0, 0, 1, 1);
-  VM::End_condition left = VM::End_condition::fixed(0.5), right = VM::End_condition::fixed(0.5);
-  bool ends_given = false;
+  std::optional<VM::End_condition> left, right; // absent: the functional's default
   std::string grid = "random";
   long lines = 1600;
   long n = -1;
   double pencil_fraction = 0.1;
-  long seed = 1;
+  unsigned long seed = 1;
   std::string engine = "planar";
   bool local = true;
+  bool picture = true;
   std::string output = "mdcs-output";
   std::string name = "curve";
-  bool quiet = false;
+  std::string threads; // for the summary (empty: not printed)
 };
 
 struct Curve_run
@@ -67,61 +82,67 @@ struct Curve_run
   VM::Minimal_curve_2 curve;     // the cut (or C_n dynamic programming)
   double oracle_value = NAN;     // shortest path on the same grid (NaN for C_n)
   double exact = NAN;            // analytic optimum where known
-  std::string exact_branch;
+  std::string exact_branch, exact_note;
   double local_energy = NAN;     // local descent from the straight line / the catenoid
   std::size_t V = 0, E = 0, F = 0, lines_used = 0;
-  double seconds_grid = 0, seconds_weights = 0, seconds_solve = 0, seconds_oracle = 0;
-  std::string svg, csv, summary;
+  double seconds_grid = 0, seconds_weights = 0, seconds_solve = 0, seconds_oracle = 0, seconds_output = 0;
+  std::string svg, png, csv, summary_file, summary;
 };
 
-inline VM::End_condition parse_end(const std::string& s, const char* name)
+// "V" or "LO:HI", each a finite number inside the value range [ymin, ymax].
+inline VM::End_condition parse_end(const std::string& text, const char* name, double ymin, double ymax)
 {
-  const auto colon = s.find(':');
-  auto number = [&](const std::string& t) {
-    char* end = nullptr;
-    const double v = std::strtod(t.c_str(), &end);
-    if(t.empty() || *end != '\0') throw Usage_error(std::string("option --") + name + ": '" + s + "' is not V or LO:HI");
-    return v;
-  };
-  if(colon == std::string::npos) return VM::End_condition::fixed(number(s));
-  return VM::End_condition::range(number(s.substr(0, colon)), number(s.substr(colon + 1)));
+  const std::string what = std::string("--") + name;
+  const auto colon = text.find(':');
+  VM::End_condition e;
+  if(colon == std::string::npos) {
+    e = VM::End_condition::fixed(parse_real_text(text, what, -1e300, 1e300));
+  } else {
+    e = VM::End_condition::range(parse_real_text(text.substr(0, colon), what, -1e300, 1e300),
+                                 parse_real_text(text.substr(colon + 1), what, -1e300, 1e300));
+    if(e.low > e.high) throw Usage_error(what + ": '" + text + "' has LO > HI");
+  }
+  if(e.low < ymin || e.high > ymax) {
+    std::ostringstream m;
+    m << what << ": '" << text << "' lies outside the range of values [" << ymin << ", " << ymax << "]";
+    throw Usage_error(m.str());
+  }
+  return e;
 }
 
-inline Curve_settings parse_curve_settings(const Options& o)
+inline Curve_settings parse_curve_settings(const Parsed_options& o)
 {
   Curve_settings s;
-  s.functional = o.text("functional", s.functional);
-  if(s.functional != "catenoid" && s.functional != "arc-length" && s.functional != "blobs")
-    throw Usage_error("--functional must be catenoid, arc-length or blobs (got '" + s.functional + "')");
-  s.radius = o.number("radius", s.radius);
-  const std::string box = o.text("box", "");
-  if(!box.empty()) {
-    double v[4];
-    char c1, c2, c3;
-    std::istringstream in(box);
-    if(!(in >> v[0] >> c1 >> v[1] >> c2 >> v[2] >> c3 >> v[3]) || c1 != ',' || c2 != ',' || c3 != ',')
-      throw Usage_error("--box must be A,B,YMIN,YMAX (got '" + box + "')");
-    s.box = CGAL::Bbox_2(v[0], v[2], v[1], v[3]);
+  s.functional = o.text("functional");
+  const bool catenoid = s.functional == "catenoid";
+  if(catenoid && o.given("box")) throw Usage_error("--box is for arc-length and blobs (the catenoid's box is [-1,1] x [0,R])");
+  if(!catenoid && o.given("radius")) throw Usage_error("--radius is for the catenoid functional");
+  s.radius = o.real("radius");
+  const std::vector<double> box = o.list("box");
+  if(!(box[0] < box[1]) || !(box[2] < box[3])) throw Usage_error("--box must have A < B and YMIN < YMAX (got '" + o.text("box") + "')");
+  s.box = CGAL::Bbox_2(box[0], box[2], box[1], box[3]);
+  const double ymin = catenoid ? 0 : box[2], ymax = catenoid ? s.radius : box[3];
+  if(o.given("left")) s.left = parse_end(o.text("left"), "left", ymin, ymax);
+  if(o.given("right")) s.right = parse_end(o.text("right"), "right", ymin, ymax);
+  s.grid = o.text("grid");
+  if(s.grid != "random") {
+    for(const char* name : {"lines", "pencil-fraction"})
+      if(o.given(name)) throw Usage_error(std::string("--") + name + " applies to --grid random only");
+    if(o.given("seed") && s.functional != "blobs") throw Usage_error("--seed applies to --grid random or --functional blobs");
+  } else if(o.given("n")) {
+    throw Usage_error("--n applies to --grid regular or regular-pl");
   }
-  if(o.has("left")) s.left = parse_end(o.text("left", ""), "left"), s.ends_given = true;
-  if(o.has("right")) s.right = parse_end(o.text("right", ""), "right"), s.ends_given = true;
-  s.grid = o.text("grid", s.grid);
-  if(s.grid != "random" && s.grid != "regular" && s.grid != "regular-pl")
-    throw Usage_error("--grid must be random, regular or regular-pl (got '" + s.grid + "')");
-  s.lines = o.integer("lines", s.lines, 1);
-  s.n = o.integer("n", s.grid == "regular" ? 12 : 2, 1);
-  s.pencil_fraction = o.number("pencil-fraction", s.pencil_fraction);
-  if(!(s.pencil_fraction >= 0 && s.pencil_fraction <= 1)) throw Usage_error("--pencil-fraction must be in [0, 1]");
-  s.seed = o.integer("seed", s.seed, 0);
-  s.engine = o.text("engine", s.engine);
-  if(s.engine != "planar" && s.engine != "pf" && s.engine != "pr" && s.engine != "bk")
-    throw Usage_error("--engine must be planar, pf, pr or bk (got '" + s.engine + "')");
-  s.local = !o.has("no-local");
-  o.text("no-local", "");
-  s.output = o.text("output", s.output);
-  s.name = o.text("name", s.name);
-  s.quiet = o.has("quiet");
-  o.text("quiet", "");
+  if(s.grid == "regular" && o.given("engine")) throw Usage_error("--grid regular is solved by dynamic programming (no --engine)");
+  s.lines = long(o.integer("lines"));
+  s.n = o.given("n") ? long(o.integer("n")) : s.grid == "regular" ? 12 : 2;
+  if(s.grid == "regular-pl" && s.n > 6) throw Usage_error("--n must be <= 6 for --grid regular-pl (about n^5 lines)");
+  s.pencil_fraction = o.real("pencil-fraction");
+  s.seed = (unsigned long)o.integer("seed");
+  s.engine = o.text("engine");
+  s.local = !o.flag("no-local");
+  s.picture = !o.flag("no-picture");
+  s.output = o.text("output");
+  s.name = checked_file_name(o.text("name"), "--name");
   return s;
 }
 
@@ -149,9 +170,74 @@ struct Blob_density
   }
 };
 
+inline std::string describe_end(const VM::End_condition& e)
+{
+  std::ostringstream s;
+  s.precision(10);
+  if(e.is_fixed()) s << e.low;
+  else s << "free in [" << e.low << ", " << e.high << "]";
+  return s.str();
+}
+
+// The analytic optimum of the problem where one is known: the catenoid / Goldschmidt solution for equal fixed
+// ends a > 0 (rings of radius a at x = -1 and 1), the straight line for arc length with fixed ends.
+inline void find_exact_curve_optimum(const Curve_settings& s, const VM::Curve_problem_2& problem, Curve_run& run,
+                                     VM::Surface_of_rotation_minimum& rotation, std::vector<VM::Svg_point>& analytic)
+{
+  const bool fixed = problem.left.is_fixed() && problem.right.is_fixed();
+  if(s.functional == "catenoid") {
+    if(!fixed || problem.left.low != problem.right.low || !(problem.left.low > 0)) {
+      run.exact_note = "not known for these end conditions (the analytic optimum covers equal fixed ends a > 0)";
+      return;
+    }
+    const double a = problem.left.low;
+    rotation = VM::global_minimum_surface_of_rotation(a);
+    run.exact = rotation.energy;
+    if(rotation.branch == VM::Surface_of_rotation_minimum::Branch::Catenoid) {
+      run.exact_branch = "catenoid";
+      for(int i = 0; i <= 200; ++i) {
+        const double x = -1 + 2.0 * i / 200;
+        analytic.push_back({x, VM::catenoid_value(rotation.catenoids.c_shallow, x)});
+      }
+    } else {
+      run.exact_branch = "Goldschmidt";
+      analytic = {{-1, a}, {-1, 0}, {1, 0}, {1, a}};
+    }
+  } else if(s.functional == "arc-length") {
+    if(!fixed) {
+      run.exact_note = "not known for free ends";
+      return;
+    }
+    run.exact = std::hypot(problem.box.xmax() - problem.box.xmin(), problem.right.low - problem.left.low);
+    run.exact_branch = "straight line";
+    analytic = {{problem.box.xmin(), problem.left.low}, {problem.box.xmax(), problem.right.low}};
+  } else {
+    run.exact_note = "not known for the blob density";
+  }
+}
+
+// Refuses a result that is not a number, or whose cut value the shortest-path oracle contradicts.
+inline void check_curve_result(const Curve_run& run)
+{
+  if(!run.curve.is_feasible) return;
+  if(!std::isfinite(run.curve.energy) || !std::isfinite(run.curve.solver_value))
+    throw Result_error("the minimal curve's energy is not finite (energy " + std::to_string(run.curve.energy) + ", solver value " +
+                       std::to_string(run.curve.solver_value) + ")");
+  for(const auto& p : run.curve.polyline)
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y())) throw Result_error("the minimal curve has a point that is not finite");
+  if(std::isfinite(run.oracle_value) &&
+     std::abs(run.oracle_value - run.curve.solver_value) > 1e-7 * std::max(1.0, std::abs(run.oracle_value))) {
+    std::ostringstream m;
+    m.precision(17);
+    m << "the min-cut value " << run.curve.solver_value << " and the shortest-path oracle " << run.oracle_value
+      << " disagree (they must be equal on the same arrangement)";
+    throw Result_error(m.str());
+  }
+}
+
 template <class Functional>
 Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& problem, const Functional& G,
-                         Progress_bar& progress)
+                         const Progress_bar& progress)
 {
   problem.validate(); // before anything uses the end values (clear message for out-of-range ends)
   Curve_run run;
@@ -198,38 +284,42 @@ Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& pro
     const VM::Minimal_curve_2 path = VM::directed_shortest_path_2(arrangement, weights, problem, progress);
     run.seconds_oracle = seconds_since(t3);
     run.oracle_value = path.solver_value;
-    // Draw each line clipped to the box (from its first to its last vertex), not its many edges.
-    std::vector<VM::Line_arrangement_2::Vertex_index> first(lines.size(), VM::Line_arrangement_2::null_index), last = first;
-    for(std::size_t i = 0; i < arrangement.number_of_edges(); ++i) {
-      const auto& e = arrangement.edge(VM::Line_arrangement_2::Edge_index(i));
-      if(e.kind != VM::Line_arrangement_2::LINE_EDGE) continue;
-      const auto& a = arrangement.point(e.source);
-      const auto& b = arrangement.point(e.target);
-      if(first[e.line] == VM::Line_arrangement_2::null_index || a < arrangement.point(first[e.line])) first[e.line] = e.source;
-      if(last[e.line] == VM::Line_arrangement_2::null_index || arrangement.point(last[e.line]) < b) last[e.line] = e.target;
-    }
-    for(std::size_t l = 0; l < lines.size(); ++l)
-      if(first[l] != VM::Line_arrangement_2::null_index) {
-        const auto& a = arrangement.point(first[l]);
-        const auto& b = arrangement.point(last[l]);
-        grid_segments.push_back({a.x(), a.y(), b.x(), b.y()});
+    if(s.picture) {
+      // Draw each line clipped to the box (from its first to its last vertex), not its many edges.
+      std::vector<VM::Line_arrangement_2::Vertex_index> first(lines.size(), VM::Line_arrangement_2::null_index), last = first;
+      for(std::size_t i = 0; i < arrangement.number_of_edges(); ++i) {
+        const auto& e = arrangement.edge(VM::Line_arrangement_2::Edge_index(i));
+        if(e.kind != VM::Line_arrangement_2::LINE_EDGE) continue;
+        const auto& a = arrangement.point(e.source);
+        const auto& b = arrangement.point(e.target);
+        if(first[e.line] == VM::Line_arrangement_2::null_index || a < arrangement.point(first[e.line])) first[e.line] = e.source;
+        if(last[e.line] == VM::Line_arrangement_2::null_index || arrangement.point(last[e.line]) < b) last[e.line] = e.target;
       }
+      for(std::size_t l = 0; l < lines.size(); ++l)
+        if(first[l] != VM::Line_arrangement_2::null_index) {
+          const auto& a = arrangement.point(first[l]);
+          const auto& b = arrangement.point(last[l]);
+          grid_segments.push_back({a.x(), a.y(), b.x(), b.y()});
+        }
+    }
   }
+  check_curve_result(run);
 
-  // The analytic optimum of the catenoid problem: drawn dashed, and the start of the local descent.
-  const VM::Surface_of_rotation_minimum exact_min =
-    s.functional == "catenoid" ? VM::global_minimum_surface_of_rotation(s.radius) : VM::Surface_of_rotation_minimum();
+  VM::Surface_of_rotation_minimum rotation;
+  std::vector<VM::Svg_point> analytic;
+  find_exact_curve_optimum(s, problem, run, rotation, analytic);
 
-  // Local descent, to show what a local method finds from a natural start.
+  // Local descent, to show what a local method finds from a natural start (the catenoid where it exists).
   std::vector<VM::Svg_point> local_points;
   if(s.local && problem.left.is_fixed() && problem.right.is_fixed()) {
+    progress.begin("local descent");
     const std::size_t m = 200;
     std::vector<double> start(m + 1);
+    const bool from_catenoid = s.functional == "catenoid" && rotation.catenoids.exists;
     for(std::size_t i = 0; i <= m; ++i) {
       const double x = problem.box.xmin() + (problem.box.xmax() - problem.box.xmin()) * double(i) / double(m);
       const double t = double(i) / double(m);
-      start[i] = (1 - t) * problem.left.low + t * problem.right.low;
-      if(s.functional == "catenoid" && exact_min.catenoids.exists) start[i] = VM::catenoid_value(exact_min.catenoids.c_shallow, x);
+      start[i] = from_catenoid ? VM::catenoid_value(rotation.catenoids.c_shallow, x) : (1 - t) * problem.left.low + t * problem.right.low;
     }
     VM::Local_descent_options options;
     options.ymin = problem.box.ymin();
@@ -238,93 +328,83 @@ Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& pro
     run.local_energy = local.energy;
     for(std::size_t i = 0; i <= m; ++i)
       local_points.push_back({problem.box.xmin() + (problem.box.xmax() - problem.box.xmin()) * double(i) / double(m), local.values[i]});
-  }
-
-  // Analytic optimum for the catenoid problem.
-  std::vector<VM::Svg_point> analytic;
-  if(s.functional == "catenoid") {
-    const VM::Surface_of_rotation_minimum& m = exact_min;
-    run.exact = m.energy;
-    if(m.branch == VM::Surface_of_rotation_minimum::Branch::Catenoid) {
-      run.exact_branch = "catenoid";
-      for(int i = 0; i <= 200; ++i) {
-        const double x = -1 + 2.0 * i / 200;
-        analytic.push_back({x, VM::catenoid_value(m.catenoids.c_shallow, x)});
-      }
-    } else {
-      run.exact_branch = "Goldschmidt";
-      analytic = {{-1, s.radius}, {-1, 0}, {1, 0}, {1, s.radius}};
-    }
-  } else if(s.functional == "arc-length") {
-    if(problem.left.is_fixed() && problem.right.is_fixed()) {
-      run.exact = std::hypot(problem.box.xmax() - problem.box.xmin(), problem.right.low - problem.left.low);
-      run.exact_branch = "straight line";
-      analytic = {{problem.box.xmin(), problem.left.low}, {problem.box.xmax(), problem.right.low}};
-    }
+    progress.end();
   }
 
   // Outputs.
+  const auto t_output = std::chrono::steady_clock::now();
+  progress.begin("writing the outputs");
   const std::filesystem::path folder = prepare_output_folder(s.output);
-  VM::Svg_curve_plot plot;
-  plot.xmin = problem.box.xmin();
-  plot.xmax = problem.box.xmax();
-  plot.ymin = problem.box.ymin();
-  plot.ymax = problem.box.ymax();
-  plot.preserve_aspect_ratio = false;
-  plot.max_grid_segments = 4000;
-  plot.legend_position = s.functional == "catenoid" ? VM::Svg_curve_plot::BOTTOM_RIGHT : VM::Svg_curve_plot::TOP_RIGHT;
-  plot.grid_segments = std::move(grid_segments);
-  for(const auto& p : run.curve.polyline) plot.solution.push_back({p.x(), p.y()});
-  plot.solution_label = "global discrete minimum (" + std::string(s.grid == "regular" ? "C_n, dynamic programming" : "min-cut") + ")";
-  plot.analytic = analytic;
-  if(!analytic.empty()) plot.analytic_label = "exact optimum (" + run.exact_branch + ")";
-  if(!local_points.empty()) {
-    VM::Svg_curve c;
-    c.points = local_points;
-    c.label = "local descent (gradient, 200 intervals)";
-    c.color = "#d95f02";
-    plot.extra_curves.push_back(c);
-  }
   std::ostringstream title;
   if(s.functional == "catenoid") title << "surface of rotation, R = " << s.radius << ": ";
   else title << s.functional << ": ";
   if(s.grid == "random") title << s.lines << " random lines";
   else if(s.grid == "regular") title << "regular grid C_" << s.n;
   else title << "C_" << s.n << "^pl";
-  plot.title = title.str();
-  std::ostringstream c1, c2;
-  c1.precision(9);
-  c1 << "discrete energy " << run.curve.energy;
-  if(std::isfinite(run.exact)) c1 << ", exact " << run.exact << " (relative error " << std::setprecision(3) << (run.curve.energy - run.exact) / run.exact << ")";
-  c2.precision(6);
-  if(std::isfinite(run.local_energy)) c2 << "local descent energy " << run.local_energy << "; ";
-  if(run.V) c2 << run.V << " vertices, " << run.E << " edges, " << run.F << " cells";
-  plot.caption_lines = {c1.str(), c2.str()};
-
-  run.svg = (folder / (s.name + ".svg")).string();
-  VM::write_curve_svg(run.svg, plot);
-  svg_to_png(run.svg);
+  if(s.picture) {
+    VM::Svg_curve_plot plot;
+    plot.xmin = problem.box.xmin();
+    plot.xmax = problem.box.xmax();
+    plot.ymin = problem.box.ymin();
+    plot.ymax = problem.box.ymax();
+    plot.preserve_aspect_ratio = false;
+    plot.max_grid_segments = 4000;
+    plot.legend_position = s.functional == "catenoid" ? VM::Svg_curve_plot::BOTTOM_RIGHT : VM::Svg_curve_plot::TOP_RIGHT;
+    plot.grid_segments = std::move(grid_segments);
+    for(const auto& p : run.curve.polyline) plot.solution.push_back({p.x(), p.y()});
+    plot.solution_label = "global discrete minimum (" + std::string(s.grid == "regular" ? "C_n, dynamic programming" : "min-cut") + ")";
+    plot.analytic = analytic;
+    if(!analytic.empty()) plot.analytic_label = "exact optimum (" + run.exact_branch + ")";
+    if(!local_points.empty()) {
+      VM::Svg_curve c;
+      c.points = local_points;
+      c.label = "local descent (gradient, 200 intervals)";
+      c.color = "#d95f02";
+      plot.extra_curves.push_back(c);
+    }
+    plot.title = title.str();
+    std::ostringstream c1, c2;
+    c1.precision(9);
+    c1 << "discrete energy " << run.curve.energy;
+    if(std::isfinite(run.exact)) c1 << ", exact " << run.exact << " (relative error " << std::setprecision(3) << (run.curve.energy - run.exact) / run.exact << ")";
+    c2.precision(6);
+    if(std::isfinite(run.local_energy)) c2 << "local descent energy " << run.local_energy << "; ";
+    if(run.V) c2 << run.V << " vertices, " << run.E << " edges, " << run.F << " cells";
+    plot.caption_lines = {c1.str(), c2.str()};
+    run.svg = (folder / (s.name + ".svg")).string();
+    {
+      Output_file svg(run.svg);
+      VM::write_curve_svg(svg.stream(), plot);
+      svg.commit();
+    }
+    if(svg_to_png(run.svg)) run.png = (folder / (s.name + ".png")).string();
+  }
   run.csv = (folder / (s.name + ".csv")).string();
   {
-    std::ofstream csv(run.csv);
-    csv.precision(17);
+    Output_file csv(run.csv);
     csv << "x,f\n";
     for(const auto& p : run.curve.polyline) csv << p.x() << "," << p.y() << "\n";
+    csv.commit();
   }
+  run.seconds_output = seconds_since(t_output);
+  progress.end();
   std::ostringstream summary;
   summary.precision(10);
-  summary << "problem: " << plot.title << ", box [" << problem.box.xmin() << ", " << problem.box.xmax() << "] x ["
-          << problem.box.ymin() << ", " << problem.box.ymax() << "]\n";
+  summary << "problem: " << title.str() << ", box [" << problem.box.xmin() << ", " << problem.box.xmax() << "] x ["
+          << problem.box.ymin() << ", " << problem.box.ymax() << "], ends " << describe_end(problem.left) << " -> "
+          << describe_end(problem.right) << "\n";
   if(!run.curve.is_feasible) {
     summary << "INFEASIBLE: no function on this grid meets the end conditions (add lines through the end points)\n";
   } else {
     summary << "discrete energy: " << run.curve.energy << " (solver value " << run.curve.solver_value << ")\n";
     if(std::isfinite(run.oracle_value))
       summary << "shortest-path oracle: " << run.oracle_value << " (relative difference "
-              << std::abs(run.oracle_value - run.curve.solver_value) / run.oracle_value << ")\n";
+              << std::abs(run.oracle_value - run.curve.solver_value) / std::max(1e-300, std::abs(run.oracle_value)) << ")\n";
     if(std::isfinite(run.exact))
       summary << "exact optimum: " << run.exact << " (" << run.exact_branch << "), relative error "
               << (run.curve.energy - run.exact) / run.exact << "\n";
+    else
+      summary << "exact optimum: " << run.exact_note << "\n";
     if(std::isfinite(run.local_energy)) summary << "local descent (200 intervals) energy: " << run.local_energy << "\n";
     summary << "curve: " << run.curve.polyline.size() << " vertices, lowest value " << [&] {
       double m = INFINITY;
@@ -333,42 +413,56 @@ Curve_run run_curve_with(const Curve_settings& s, const VM::Curve_problem_2& pro
     }() << "\n";
   }
   if(run.V) summary << "arrangement: " << run.lines_used << " lines used, " << run.V << " vertices, " << run.E << " edges, " << run.F << " cells\n";
-  summary << "time: grid " << run.seconds_grid << " s, weights " << run.seconds_weights << " s, solve (" << s.engine << ") "
-          << run.seconds_solve << " s, oracle " << run.seconds_oracle << " s\n";
-  summary << "files: " << run.svg << ", " << run.csv << "\n";
+  summary << "time: grid " << run.seconds_grid << " s, weights " << run.seconds_weights << " s, solve ("
+          << (s.grid == "regular" ? "dynamic programming" : s.engine) << ") " << run.seconds_solve << " s, oracle "
+          << run.seconds_oracle << " s, output " << run.seconds_output << " s\n";
+  if(!s.threads.empty()) summary << "threads: " << s.threads << "\n";
+  run.summary_file = (folder / (s.name + "_summary.txt")).string();
+  summary << "files: " << run.csv << (run.svg.empty() ? "" : ", " + run.svg) << (run.png.empty() ? "" : ", " + run.png)
+          << ", " << run.summary_file << ", " << (folder / (s.name + "_summary.json")).string() << "\n";
   run.summary = summary.str();
-  std::ofstream((folder / (s.name + "_summary.txt")).string()) << run.summary;
+  write_text_file(run.summary_file, run.summary);
   return run;
 }
 
-inline Curve_run run_curve(Curve_settings s, Progress_bar& progress)
+inline Curve_run run_curve(const Curve_settings& s, const Progress_bar& progress)
 {
-  VM::Curve_problem_2 problem;
   if(s.functional == "catenoid") {
-    if(!(s.radius > 0) || !std::isfinite(s.radius)) throw Usage_error("--radius must be positive");
-    problem = VM::Curve_problem_2{CGAL::Bbox_2(-1, 0, 1, s.radius), VM::End_condition::fixed(s.radius),
-                                  VM::End_condition::fixed(s.radius)};
-    if(s.ends_given) problem.left = s.left, problem.right = s.right;
+    const VM::Curve_problem_2 problem{CGAL::Bbox_2(-1, 0, 1, s.radius), s.left.value_or(VM::End_condition::fixed(s.radius)),
+                                      s.right.value_or(VM::End_condition::fixed(s.radius))};
     return run_curve_with(s, problem, VM::Surface_of_rotation_functional(), progress);
   }
-  problem = VM::Curve_problem_2{s.box, s.left, s.right};
+  const VM::Curve_problem_2 problem{s.box, s.left.value_or(VM::End_condition::fixed(0.5)), s.right.value_or(VM::End_condition::fixed(0.5))};
   if(s.functional == "arc-length") return run_curve_with(s, problem, VM::Arc_length_functional(), progress);
   return run_curve_with(s, problem, VM::make_density_weighted_length_functional(Blob_density(s.box, unsigned(s.seed))), progress);
 }
 
-inline int command_curve(const Options& o)
+// The run as data: NAME_summary.json.
+inline void write_curve_json(const Curve_settings& s, const Curve_run& run, Invocation& inv, int exit_code)
 {
-  if(o.has("help")) {
-    std::cout << curve_usage();
-    return EXIT_OK;
+  Run_summary_json j;
+  j.inputs.add("functional", s.functional).add("grid", s.grid);
+  j.timings.add("grid", run.seconds_grid).add("weights", run.seconds_weights).add("solve", run.seconds_solve)
+    .add("oracle", run.seconds_oracle).add("output", run.seconds_output);
+  Json_object box, ends;
+  box.add("a", run.problem.box.xmin()).add("b", run.problem.box.xmax()).add("ymin", run.problem.box.ymin()).add("ymax", run.problem.box.ymax());
+  ends.raw("left", json_numbers({run.problem.left.low, run.problem.left.high}))
+    .raw("right", json_numbers({run.problem.right.low, run.problem.right.high}));
+  j.results.add("box", box).add("ends_low_high", ends).add("feasible", bool(run.curve.is_feasible));
+  if(run.curve.is_feasible) {
+    j.results.add("energy", run.curve.energy).add("solver_value", run.curve.solver_value).add("oracle_value", run.oracle_value)
+      .add("exact_optimum", run.exact).add("exact_branch", run.exact_branch).add("local_descent_energy", run.local_energy)
+      .add("curve_vertices", (unsigned long long)run.curve.polyline.size()).add("curve_csv", run.csv);
   }
-  const Curve_settings s = parse_curve_settings(o);
-  o.reject_unknown();
-  if(!o.positional().empty()) throw Usage_error("unexpected argument '" + o.positional().front() + "'");
-  Progress_bar progress(s.quiet);
-  const Curve_run run = run_curve(s, progress);
-  std::cout << run.summary;
-  return run.curve.is_feasible ? EXIT_OK : EXIT_INFEASIBLE;
+  Json_object arrangement;
+  arrangement.add("lines_used", (unsigned long long)run.lines_used).add("vertices", (unsigned long long)run.V)
+    .add("edges", (unsigned long long)run.E).add("cells", (unsigned long long)run.F);
+  j.results.add("arrangement", arrangement);
+  if(!run.exact_note.empty()) j.notes.push_back("exact optimum " + run.exact_note);
+  j.files = {run.csv, run.summary_file};
+  if(!run.svg.empty()) j.files.push_back(run.svg);
+  if(!run.png.empty()) j.files.push_back(run.png);
+  j.write((std::filesystem::path(s.output) / (s.name + "_summary.json")).string(), inv, exit_code);
 }
 
 } // namespace mdcs_cli

@@ -5,61 +5,20 @@
 #include "cli_common.h"
 #include "cmd_curve.h"
 #include "cmd_mincut.h"
-#include "cmd_mwt.h"
-#include "cmd_silhouette.h"
-#include "cmd_surface.h"
-#include "demo_geodesics.h"
+#include "demo_sections.h"
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
 namespace mdcs_cli {
 
-inline const char* demo_usage()
+// Runs every section into `output`; returns whether every consistency check passed. `summary` receives the
+// checks for summary.json.
+inline bool run_demo(const std::string& output, bool quick, const Progress_bar& progress, Json_object& summary)
 {
-  return
-    "usage: mdcs demo [--output DIR] [--quick] [--quiet]\n"
-    "Runs every capability on default data and writes pictures (SVG, PNG where rsvg-convert exists), CSV files\n"
-    "and summary.md into DIR (default mdcs-output):\n"
-    "  catenoid          minimal surface of rotation, R = 2, 1600 random lines; exact answer dashed\n"
-    "  goldschmidt       R = 1.7: the global optimum drops to the axis; local descent stays on the catenoid\n"
-    "  blobs             length weighted by a density of blobs (many local minima), fixed and relaxed ends\n"
-    "  regular           the regular grid C_12 (dynamic programming)\n"
-    "  convergence       catenoid energy error vs grid size, random lines vs C_n (CSV + plot)\n"
-    "  mincut            the catenoid's dual network written as DIMACS and re-solved by all three max-flow engines\n"
-    "  geodesics         exact geodesic distances and shortest paths on CGAL's elephant and Chinese dragon (a\n"
-    "                    generated torus without CGAL's data), checked against Surface_mesh_shortest_path;\n"
-    "                    in geodesics-MESH/ folders\n"
-    "  surface           minimal surfaces (BSP plane arrangement + min-cut): saddle, heavy membrane, Scherk (exact\n"
-    "                    area), a saddle on an L-shaped polygonal domain (relaxed on Delaunay meshes of the L), and a\n"
-    "                    blob density with plane selection, relaxed on an 80^2 grid, with a histogram of 8 local\n"
-    "                    descents from random starts against it\n"
-    "  mwt               minimum weight triangulations by the triangle LP: 1000 uniform and 400 clustered points\n"
-    "                    certified (exactly, without tolerance, on random sets), the thesis's 13-wheel (LP 18.7636\n"
-    "                    fractional, MWT 18.7989 by branch and bound)\n"
-    "  silhouettes       loop picking and loop mapping (min cut) on a 20k-face bunny with a 1k-face coarse mesh,\n"
-    "                    12-frame rotation\n"
-    "  --quick           smaller grids and meshes, fewer runs (for a fast smoke run)\n";
-}
-
-inline int command_demo(const Options& o)
-{
-  if(o.has("help")) {
-    std::cout << demo_usage();
-    return EXIT_OK;
-  }
-  const std::string output = o.text("output", "mdcs-output");
-  const bool quick = o.has("quick");
-  o.text("quick", "");
-  const bool quiet = o.has("quiet");
-  o.text("quiet", "");
-  o.reject_unknown();
-  if(!o.positional().empty()) throw Usage_error("unexpected argument '" + o.positional().front() + "'");
   const std::filesystem::path folder = prepare_output_folder(output);
-  Progress_bar progress(quiet);
   const long lines = quick ? 300 : 1600;
   const auto t_start = std::chrono::steady_clock::now();
 
@@ -95,7 +54,6 @@ inline int command_demo(const Options& o)
   catenoid.lines = lines;
   catenoid.output = output;
   catenoid.name = "catenoid";
-  catenoid.quiet = quiet;
   const Curve_run cat = run_curve(catenoid, progress);
   record("catenoid R = 2", catenoid, cat);
 
@@ -114,7 +72,6 @@ inline int command_demo(const Options& o)
   blobs.lines = quick ? 300 : 600;
   blobs.output = output;
   blobs.name = "blobs";
-  blobs.quiet = quiet;
   blobs.seed = 3;
   const Curve_run bl = run_curve(blobs, progress);
   record("blob density, fixed ends 0.2 -> 0.8", blobs, bl);
@@ -137,7 +94,7 @@ inline int command_demo(const Options& o)
   {
     const VM::Curve_problem_2 problem{CGAL::Bbox_2(-1, 0, 1, 2), VM::End_condition::fixed(2), VM::End_condition::fixed(2)};
     const double exact = VM::global_minimum_surface_of_rotation(2).energy;
-    std::ofstream csv((folder / "convergence.csv").string());
+    Output_file csv((folder / "convergence.csv").string());
     csv << "grid,size,edges,relative_error\n";
     VM::Svg_curve random_curve, regular_curve;
     random_curve.label = "random lines (100 .. 3200)";
@@ -177,8 +134,13 @@ inline int command_demo(const Options& o)
     plot.solution_label = "";
     plot.extra_curves = {random_curve, regular_curve};
     plot.caption_lines = {"one grid per point (random lines: seed 1, optimum by the shortest-path solver; C_n: dynamic programming)"};
+    csv.commit();
     const std::string svg = (folder / "convergence.svg").string();
-    VM::write_curve_svg(svg, plot);
+    {
+      Output_file file(svg);
+      VM::write_curve_svg(file.stream(), plot);
+      file.commit();
+    }
     svg_to_png(svg);
     md << "\nConvergence of the catenoid energy (see `convergence.csv`, [convergence.svg](convergence.svg)).\n";
   }
@@ -202,17 +164,20 @@ inline int command_demo(const Options& o)
   }
 
   // 7. Exact geodesic distances on a triangle mesh, checked against CGAL's Surface_mesh_shortest_path.
-  if(!demo_geodesics(folder, quick, quiet, progress, md)) all_ok = false;
+  const bool geodesics_ok = demo_geodesics(folder, quick, progress, md);
   // 8-10. Minimal surfaces, minimum weight triangulations, simplified silhouettes.
-  if(!demo_surface(folder, quick, quiet, progress, md)) all_ok = false;
-  if(!demo_mwt(folder, quick, quiet, progress, md)) all_ok = false;
-  if(!demo_silhouette(folder, quick, quiet, progress, md)) all_ok = false;
+  const bool surface_ok = demo_surface(folder, quick, progress, md);
+  const bool mwt_ok = demo_mwt(folder, quick, progress, md);
+  const bool silhouette_ok = demo_silhouette(folder, quick, progress, md);
+  summary.add("curves_and_min_cut", all_ok).add("geodesics", geodesics_ok).add("surfaces", surface_ok).add("mwt", mwt_ok)
+    .add("silhouettes", silhouette_ok);
+  all_ok = all_ok && geodesics_ok && surface_ok && mwt_ok && silhouette_ok;
 
   md << "\nTotal time " << std::setprecision(3) << seconds_since(t_start) << " s. Consistency checks: "
      << (all_ok ? "all passed" : "FAILED") << ".\n";
-  std::ofstream((folder / "summary.md").string()) << md.str();
+  write_text_file((folder / "summary.md").string(), md.str());
   std::cout << "summary: " << (folder / "summary.md").string() << (all_ok ? "" : "  (CONSISTENCY CHECK FAILED)") << "\n";
-  return all_ok ? EXIT_OK : EXIT_FAILURE_RUNTIME;
+  return all_ok;
 }
 
 } // namespace mdcs_cli

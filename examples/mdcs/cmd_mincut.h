@@ -18,22 +18,6 @@
 
 namespace mdcs_cli {
 
-inline const char* mincut_usage()
-{
-  return
-    "usage: mdcs mincut FILE [--engine pf|pr|bk] [--sides OUT]\n"
-    "Reads a max-flow problem in DIMACS format ('p max N M', 'n ID s', 'n ID t', 'a U V CAP', 'c' comments),\n"
-    "computes the maximum flow / minimum cut with the Min_cut component and prints the value and the size of the\n"
-    "source side. The file is checked line by line (one 'p' line first, one source, one sink, node ids in 1..N,\n"
-    "finite capacities >= 0, exactly M arcs): any problem exits 3 with the line and the reason.\n"
-    "  --engine pf|pr|bk  pseudoflow (default), push-relabel or Boykov-Kolmogorov (Boost.Graph, 32-bit CSR)\n"
-    "  --sides OUT      write 'ID S' (source side) or 'ID T' for every node that a line of the file mentions;\n"
-    "                   nodes no line mentions are isolated and on the sink side: a first line 'c ...' counts them\n";
-}
-
-// A malformed input file: exit code 3.
-struct Input_error : std::runtime_error { using std::runtime_error::runtime_error; };
-
 struct Mincut_report
 {
   double value = 0;
@@ -93,9 +77,7 @@ inline double write_catenoid_dual_dimacs(double R, long lines, const std::string
   const CGAL::Min_cut::Max_flow_problem<double> finite(network);
   const std::size_t n = network.number_of_nodes();
   const std::size_t s = n + 1, t = n + 2;
-  std::ofstream out(path);
-  if(!out) throw std::runtime_error("cannot write '" + path + "'");
-  out.precision(17);
+  Output_file out(path);
   std::size_t arc_count = 0;
   std::ostringstream arcs;
   arcs.precision(17);
@@ -114,36 +96,8 @@ inline double write_catenoid_dual_dimacs(double R, long lines, const std::string
       << "p max " << n + 2 << " " << arc_count << "\n"
       << "n " << s << " s\nn " << t << " t\n"
       << arcs.str();
+  out.commit();
   return CGAL::Min_cut::solve_min_cut(network).value;
-}
-
-inline int command_mincut(const Options& o)
-{
-  if(o.has("help")) {
-    std::cout << mincut_usage();
-    return EXIT_OK;
-  }
-  const std::string engine = o.text("engine", "pf");
-  if(engine != "pf" && engine != "pr" && engine != "bk") throw Usage_error("--engine must be pf, pr or bk (got '" + engine + "')");
-  const std::string sides = o.text("sides", "");
-  o.reject_unknown();
-  if(o.positional().size() != 1) throw Usage_error("mdcs mincut needs exactly one DIMACS file");
-  const Mincut_report r = solve_dimacs_file(o.positional().front(), engine);
-  std::cout.precision(12);
-  std::cout << "max flow = min cut = " << r.value << "\n"
-            << "nodes " << r.nodes << ", arcs " << r.arcs << ", source side " << r.source_side << " nodes\n"
-            << "engine " << (engine == "bk" ? "Boykov-Kolmogorov" : engine == "pr" ? "push-relabel" : "pseudoflow") << ", "
-            << r.seconds << " s\n";
-  if(!sides.empty()) {
-    std::ofstream out(sides);
-    if(!out) throw std::runtime_error("cannot write '" + sides + "'");
-    // Nodes that no line of the file mentions are isolated, on the sink side, and not listed (see Mincut_report).
-    if(r.sides.size() < r.nodes)
-      out << "c " << r.nodes - r.sides.size() << " of the " << r.nodes << " nodes appear in no line of the input: they are "
-          << "isolated, on the sink side (T), and not listed\n";
-    for(const auto& side : r.sides) out << side.first << (side.second ? " S\n" : " T\n");
-  }
-  return EXIT_OK;
 }
 
 } // namespace mdcs_cli

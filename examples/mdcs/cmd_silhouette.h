@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -109,8 +108,9 @@ inline void write_svg(const std::string& path, const Simplifier& s, const std::v
                       const std::string& title)
 {
   const double W = 360, H = 360, margin = 14, top = 40, label = 22;
-  std::ofstream out(path);
-  if(!out) throw std::runtime_error("cannot write " + path);
+  Output_file file(path);
+  std::ostream& out = file.stream();
+  out.precision(6);
   const double width = sets.size() * W, height = top + cams.size() * (H + label);
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
       << width << " " << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
@@ -145,16 +145,19 @@ inline void write_svg(const std::string& path, const Simplifier& s, const std::v
     }
   }
   out << "</svg>\n";
+  file.commit();
 }
 
 struct Run_summary
 {
   std::size_t fine_faces = 0, coarse_faces = 0, fine_edges = 0, coarse_edges = 0, picked_edges = 0, mapped_edges = 0;
   std::size_t fine_loops = 0, coarse_loops = 0, picked_loops = 0, mapped_loops = 0;
-  double preprocess_s = 0, extract_ms = 0, picking_ms = 0, mapping_ms = 0;
+  double preprocess_s = 0, extract_ms = 0, picking_ms = 0, mapping_ms = 0, rotation_s = 0, coherence_s = 0, output_s = 0;
   double incoherence[4] = {-1, -1, -1, -1}; // picking, picking+remedy, mapping, mapping+remedy
   bool consistent = true;
   std::string problems;
+  std::vector<std::string> files;
+  std::string report; // the text printed and written to summary.txt
 };
 
 struct Run_parameters
@@ -162,7 +165,7 @@ struct Run_parameters
   std::size_t coarse_faces = 1000;
   double alpha = 0.1, azimuth = 30, elevation = 20, remedy_bias = 0.5;
   int up = 1;
-  bool picking = true, mapping = true, orthographic = false;
+  bool picking = true, mapping = true, orthographic = false, picture = true;
   long frames = 0;
   std::string name = "mesh";
 };
@@ -188,9 +191,49 @@ inline void check_frame(const Simplifier& s, const SS::Silhouette_frame& frame, 
     if(!on[h]) fail("a picked edge off the fine silhouette");
 }
 
-// Runs one view (and optionally a rotation) and writes the pictures into `folder`.
-inline Run_summary run(const Mesh& fine, const Run_parameters& p, const std::filesystem::path& folder, Progress_bar& progress,
-                       bool quiet)
+// The loops of one view as data (loops.csv): one row per loop vertex, in loop order, with the loop's set (fine:
+// every fine silhouette loop; coarse; picked: method A; mapped: method B), its number in the set, whether it is
+// closed, the vertex (an index into the mesh as read for fine / picked / mapped, into coarse.off for coarse) and
+// its coordinates (17 significant digits).
+inline void write_loops_csv(const std::string& path, const Simplifier& s, const SS::Silhouette_frame& frame, const Run_parameters& p)
+{
+  Output_file out(path);
+  out << "set,loop,closed,position,vertex,x,y,z\n";
+  auto loops = [&](const char* set, const std::vector<SS::Silhouette_frame::Loop>& list, const std::vector<std::uint32_t>* pick, bool coarse) {
+    const auto& m = coarse ? s.coarse() : s.fine();
+    const std::size_t count = pick ? pick->size() : list.size();
+    for(std::size_t k = 0; k < count; ++k) {
+      const auto& l = list[pick ? (*pick)[k] : k];
+      for(std::size_t i = 0; i < l.halfedges.size(); ++i) {
+        const std::uint32_t v = m.source[l.halfedges[i]];
+        const Point_3& q = m.points[v];
+        out << set << "," << k << "," << (l.closed ? 1 : 0) << "," << i << "," << v << "," << q.x() << "," << q.y() << "," << q.z() << "\n";
+      }
+    }
+  };
+  loops("fine", frame.fine_loops, nullptr, false);
+  loops("coarse", frame.coarse_loops, nullptr, true);
+  if(p.picking) loops("picked", frame.fine_loops, &frame.picked, false);
+  if(p.mapping) loops("mapped", frame.mapped, nullptr, false);
+  out.commit();
+}
+
+inline void write_off_checked(const std::string& path, const Mesh& m)
+{
+  Output_file out(path);
+  out << "OFF\n" << m.number_of_vertices() << " " << m.number_of_faces() << " 0\n";
+  for(Mesh::Vertex_index v : m.vertices()) out << m.point(v).x() << " " << m.point(v).y() << " " << m.point(v).z() << "\n";
+  for(Mesh::Face_index f : m.faces()) {
+    out << "3";
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m)) out << " " << std::size_t(v);
+    out << "\n";
+  }
+  out.commit();
+}
+
+// Runs one view (and optionally a rotation) and writes the files into `folder`: loops.csv, coarse.off,
+// silhouette.svg (front and side) unless p.picture is false, and with p.frames > 1 frames.csv and frame_NNN.svg.
+inline Run_summary run_silhouette(const Mesh& fine, const Run_parameters& p, const std::filesystem::path& folder, const Progress_bar& progress)
 {
   Run_summary sum;
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(fine);
@@ -198,7 +241,9 @@ inline Run_summary run(const Mesh& fine, const Run_parameters& p, const std::fil
   SS::Coarse_mesh_options co;
   co.target_faces = p.coarse_faces;
   const auto coarse = SS::build_coarse_mesh(fine, get(CGAL::vertex_point, fine), co, std::ref(progress));
+  progress.begin("silhouette preprocessing");
   Simplifier s(fine, coarse.mesh, coarse.coarse_face_of_fine_face);
+  progress.end();
   sum.preprocess_s = seconds_since(t0);
   sum.fine_faces = num_faces(fine);
   sum.coarse_faces = num_faces(coarse.mesh);
@@ -224,18 +269,29 @@ inline Run_summary run(const Mesh& fine, const Run_parameters& p, const std::fil
   sum.picked_loops = frame.picked.size();
   sum.mapped_loops = frame.mapped.size();
 
-  std::vector<Edge_set> sets;
-  sets.push_back({"fine silhouette, " + std::to_string(sum.fine_edges) + " edges", "#444", frame.fine_silhouette, 0.8});
-  sets.push_back({"coarse silhouette, " + std::to_string(sum.coarse_edges) + " edges", "#1f77b4", frame.coarse_silhouette, 1.2});
-  if(p.picking) sets.push_back({"picked (A), " + std::to_string(sum.picked_edges) + " edges", "#2ca02c", frame.picked_halfedges(), 1.0});
-  if(p.mapping) sets.push_back({"mapped (B), " + std::to_string(sum.mapped_edges) + " edges", "#d62728", frame.mapped_halfedges(), 1.0});
+  t0 = std::chrono::steady_clock::now();
+  const std::string loops_csv = (folder / "loops.csv").string(), coarse_off = (folder / "coarse.off").string();
+  write_loops_csv(loops_csv, s, frame, p);
+  write_off_checked(coarse_off, coarse.mesh);
+  sum.files = {loops_csv, coarse_off};
   const std::string svg = (folder / "silhouette.svg").string();
-  write_svg(svg, s, {cam, side_camera(cam)}, {"front", "side"}, sets,
-            p.name + ": " + std::to_string(sum.fine_faces) + " faces, coarse " + std::to_string(sum.coarse_faces) + " faces");
-  svg_to_png(svg);
+  if(p.picture) {
+    std::vector<Edge_set> sets;
+    sets.push_back({"fine silhouette, " + std::to_string(sum.fine_edges) + " edges", "#444", frame.fine_silhouette, 0.8});
+    sets.push_back({"coarse silhouette, " + std::to_string(sum.coarse_edges) + " edges", "#1f77b4", frame.coarse_silhouette, 1.2});
+    if(p.picking) sets.push_back({"picked (A), " + std::to_string(sum.picked_edges) + " edges", "#2ca02c", frame.picked_halfedges(), 1.0});
+    if(p.mapping) sets.push_back({"mapped (B), " + std::to_string(sum.mapped_edges) + " edges", "#d62728", frame.mapped_halfedges(), 1.0});
+    write_svg(svg, s, {cam, side_camera(cam)}, {"front", "side"}, sets,
+              p.name + ": " + std::to_string(sum.fine_faces) + " faces, coarse " + std::to_string(sum.coarse_faces) + " faces");
+    sum.files.push_back(svg);
+    if(svg_to_png(svg)) sum.files.push_back((folder / "silhouette.png").string());
+  }
+  sum.output_s = seconds_since(t0);
 
   if(p.frames > 1) {
-    std::ofstream csv((folder / "frames.csv").string());
+    t0 = std::chrono::steady_clock::now();
+    const std::string frames_csv = (folder / "frames.csv").string();
+    Output_file csv(frames_csv);
     csv << "frame,azimuth_deg,fine_edges,picked_edges,mapped_edges\n";
     // Picture sequence with the chosen methods.
     SS::Silhouette_frame prev, cur;
@@ -248,17 +304,24 @@ inline Run_summary run(const Mesh& fine, const Run_parameters& p, const std::fil
       if(p.picking) s.pick_loops(cur);
       if(p.mapping) s.map_loops(cur, mo);
       check_frame(s, cur, sum);
-      std::vector<Edge_set> fs = {{"fine, " + std::to_string(cur.fine_silhouette.size()) + " edges", "#444", cur.fine_silhouette, 0.8}};
-      if(p.picking) fs.push_back({"picked, " + std::to_string(cur.picked_halfedges().size()) + " edges", "#2ca02c", cur.picked_halfedges(), 1.0});
-      if(p.mapping) fs.push_back({"mapped, " + std::to_string(cur.mapped_halfedges().size()) + " edges", "#d62728", cur.mapped_halfedges(), 1.0});
-      std::ostringstream name;
-      name << "frame_" << std::setw(3) << std::setfill('0') << t << ".svg";
-      write_svg((folder / name.str()).string(), s, {c}, {"front"}, fs, p.name + ", azimuth " + std::to_string(int(az)) + " deg");
+      if(p.picture) {
+        std::vector<Edge_set> fs = {{"fine, " + std::to_string(cur.fine_silhouette.size()) + " edges", "#444", cur.fine_silhouette, 0.8}};
+        if(p.picking) fs.push_back({"picked, " + std::to_string(cur.picked_halfedges().size()) + " edges", "#2ca02c", cur.picked_halfedges(), 1.0});
+        if(p.mapping) fs.push_back({"mapped, " + std::to_string(cur.mapped_halfedges().size()) + " edges", "#d62728", cur.mapped_halfedges(), 1.0});
+        std::ostringstream name;
+        name << "frame_" << std::setw(p.frames > 1000 ? 4 : 3) << std::setfill('0') << t << ".svg";
+        write_svg((folder / name.str()).string(), s, {c}, {"front"}, fs, p.name + ", azimuth " + std::to_string(int(az)) + " deg");
+      }
       csv << t << "," << az << "," << cur.fine_silhouette.size() << "," << cur.picked_halfedges().size() << ","
           << cur.mapped_halfedges().size() << "\n";
     }
     progress("rotation", 1.0);
+    csv.commit();
+    sum.files.push_back(frames_csv);
+    if(p.picture) sum.files.push_back((folder / "frame_*.svg").string());
+    sum.rotation_s = seconds_since(t0);
     // Temporal coherence over small steps (0.5 degree), both methods, with and without the remedy.
+    t0 = std::chrono::steady_clock::now();
     for(int variant = 0; variant < 4; ++variant) {
       const bool mapping = variant >= 2, remedy = variant % 2 == 1;
       if((mapping && !p.mapping) || (!mapping && !p.picking)) continue;
@@ -267,6 +330,7 @@ inline Run_summary run(const Mesh& fine, const Run_parameters& p, const std::fil
       SS::Loop_mapping_options m2 = mo;
       if(remedy) { po.previous_bias = p.remedy_bias; m2.previous_bias = p.remedy_bias; }
       for(long t = 0; t < 40; ++t) {
+        if(!progress("temporal coherence", (variant * 40 + t) / 160.0)) throw CGAL::MDCS::Operation_cancelled("temporal coherence");
         s.extract(view_of(orbit_camera(box, p.azimuth + 0.5 * double(t), p.elevation, p.up)), cur);
         if(mapping) s.map_loops(cur, m2, t > 0 ? &prev : nullptr);
         else s.pick_loops(cur, po, t > 0 ? &prev : nullptr);
@@ -279,24 +343,29 @@ inline Run_summary run(const Mesh& fine, const Run_parameters& p, const std::fil
       }
       sum.incoherence[variant] = SS::temporal_incoherence(ssets, fsets);
     }
+    progress("temporal coherence", 1.0);
+    sum.coherence_s = seconds_since(t0);
   }
-  if(!quiet) {
-    std::cout << p.name << ": fine " << sum.fine_faces << " faces, coarse " << sum.coarse_faces << " faces (preprocessing "
-              << std::setprecision(3) << sum.preprocess_s << " s)\n"
-              << "  silhouette: fine " << sum.fine_edges << " edges in " << sum.fine_loops << " loops, coarse " << sum.coarse_edges
-              << " edges in " << sum.coarse_loops << " loops (extraction + decomposition " << sum.extract_ms << " ms)\n";
-    if(p.picking) std::cout << "  loop picking: " << sum.picked_loops << " loops, " << sum.picked_edges << " edges, " << sum.picking_ms << " ms\n";
-    if(p.mapping) std::cout << "  loop mapping: " << sum.mapped_loops << " loops, " << sum.mapped_edges << " edges, " << sum.mapping_ms << " ms\n";
-    if(p.frames > 1) {
-      std::cout << "  temporal incoherence (simplified change / true change, 40 steps of 0.5 deg):";
-      const char* names[4] = {"picking", "picking+remedy", "mapping", "mapping+remedy"};
-      for(int v = 0; v < 4; ++v)
-        if(sum.incoherence[v] >= 0) std::cout << " " << names[v] << " " << sum.incoherence[v];
-      std::cout << "\n";
-    }
-    std::cout << "  pictures: " << svg << (p.frames > 1 ? " and frame_*.svg" : "") << "\n";
-    if(!sum.consistent) std::cout << "  CONSISTENCY CHECK FAILED: " << sum.problems << "\n";
+  std::ostringstream r;
+  r << p.name << ": fine " << sum.fine_faces << " faces, coarse " << sum.coarse_faces << " faces (preprocessing "
+    << std::setprecision(3) << sum.preprocess_s << " s)\n"
+    << "  silhouette: fine " << sum.fine_edges << " edges in " << sum.fine_loops << " loops, coarse " << sum.coarse_edges
+    << " edges in " << sum.coarse_loops << " loops (extraction + decomposition " << sum.extract_ms << " ms)\n";
+  if(p.picking) r << "  loop picking: " << sum.picked_loops << " loops, " << sum.picked_edges << " edges, " << sum.picking_ms << " ms\n";
+  if(p.mapping) r << "  loop mapping: " << sum.mapped_loops << " loops, " << sum.mapped_edges << " edges, " << sum.mapping_ms << " ms\n";
+  if(p.frames > 1) {
+    r << "  temporal incoherence (simplified change / true change, 40 steps of 0.5 deg):";
+    const char* names[4] = {"picking", "picking+remedy", "mapping", "mapping+remedy"};
+    for(int v = 0; v < 4; ++v)
+      if(sum.incoherence[v] >= 0) r << " " << names[v] << " " << sum.incoherence[v];
+    r << "\n";
   }
+  r << "  checks (closed loops of mesh edges, picked edges on the fine silhouette): "
+    << (sum.consistent ? "passed" : "FAILED: " + sum.problems) << "\n";
+  r << "  files:";
+  for(const std::string& f : sum.files) r << " " << f;
+  r << "\n";
+  sum.report = r.str();
   return sum;
 }
 
@@ -350,138 +419,6 @@ inline Mesh generated_mesh(int levels)
 }
 
 } // namespace sil_detail
-
-// Names of the options of `mdcs silhouette` that take no value.
-inline std::vector<std::string> silhouette_flags() { return {"orthographic", "quiet", "repair", "help"}; }
-
-inline const char* silhouette_usage()
-{
-  return "usage: mdcs silhouette MESH [--view AZIMUTH,ELEVATION] [--orthographic] [--up x|y|z] [--method picking|mapping|both]\n"
-         "                        [--coarse-faces N] [--alpha A] [--frames N] [--output DIR] [--quiet]\n"
-         "  Simplified silhouette of a triangle mesh (thesis chapter 5). A coarse mesh (half-edge collapses,\n"
-         "  smoothing) guides the choice of fine silhouette loops (picking, method A) or the minimal-weight\n"
-         "  loops of fine edges that follow the coarse silhouette loops (mapping, method B, min cut).\n"
-         "  MESH                OFF, PLY, OBJ or STL, a valid oriented manifold mesh (otherwise refused, exit 3,\n"
-         "                      saying why; larger faces are triangulated), or the generated @torus / @icosphere\n"
-         "  --repair            run CGAL's soup repair on a file that is not a valid mesh instead of refusing it\n"
-         "                      (it changes the surface; said on stderr and in the pictures' titles)\n"
-         "  --view A,E          perspective eye at azimuth A and elevation E degrees, 2.5 diagonals away (30,20)\n"
-         "  --up x|y|z          the up axis of the orbit (y)\n"
-         "  --orthographic      orthographic view along the same direction instead of the perspective eye\n"
-         "  --method M          picking, mapping or both (both)\n"
-         "  --coarse-faces N    faces of the coarse mesh (1000)\n"
-         "  --alpha A           weight factor of fine silhouette edges in loop mapping, in (0,1] (0.1)\n"
-         "  --frames N          also a rotation of N frames (frame_NNN.svg, frames.csv) and the temporal-coherence\n"
-         "                      metric with and without the previous-frame remedy\n"
-         "  --output DIR        output folder (silhouette_out)\n"
-         "  Writes DIR/silhouette.svg (front and side views: fine, coarse, picked, mapped, with edge counts).\n";
-}
-
-inline int command_silhouette(const Options& o)
-{
-  if(o.has("help")) { std::cout << silhouette_usage(); return EXIT_OK; }
-  using namespace sil_detail;
-  if(o.positional().size() != 1) throw Usage_error("expected one mesh file");
-  Run_parameters p;
-  const std::string view = o.text("view", "30,20");
-  {
-    const auto comma = view.find(',');
-    char* end = nullptr;
-    if(comma == std::string::npos) throw Usage_error("--view expects AZIMUTH,ELEVATION in degrees");
-    p.azimuth = std::strtod(view.substr(0, comma).c_str(), &end);
-    p.elevation = std::strtod(view.substr(comma + 1).c_str(), &end);
-    if(!std::isfinite(p.azimuth) || !std::isfinite(p.elevation) || std::abs(p.elevation) >= 90)
-      throw Usage_error("--view: the elevation must be in (-90, 90)");
-  }
-  const std::string up = o.text("up", "y");
-  if(up != "x" && up != "y" && up != "z") throw Usage_error("--up must be x, y or z");
-  p.up = up == "x" ? 0 : up == "y" ? 1 : 2;
-  const std::string method = o.text("method", "both");
-  if(method != "picking" && method != "mapping" && method != "both") throw Usage_error("--method must be picking, mapping or both");
-  p.picking = method != "mapping";
-  p.mapping = method != "picking";
-  p.coarse_faces = std::size_t(o.integer("coarse-faces", 1000, 4));
-  p.alpha = o.number("alpha", 0.1);
-  if(!(p.alpha > 0 && p.alpha <= 1)) throw Usage_error("--alpha must be in (0, 1]");
-  p.frames = o.integer("frames", 0, 0);
-  const std::string out = o.text("output", "silhouette_out");
-  const bool quiet = o.has("quiet");
-  o.text("quiet", "");
-  p.orthographic = o.has("orthographic");
-  o.text("orthographic", "");
-  const bool repair = o.has("repair");
-  o.text("repair", "");
-  o.reject_unknown();
-  const std::string path = o.positional()[0];
-  p.name = std::filesystem::path(path).filename().string();
-  bool repaired = false;
-  const Mesh fine = read_triangle_mesh(path, repair, &repaired);
-  if(repaired) p.name += " (repaired by CGAL's soup repair)";
-  const auto folder = prepare_output_folder(out);
-  Progress_bar progress(quiet);
-  const Run_summary sum = run(fine, p, folder, progress, quiet);
-  return sum.consistent ? EXIT_OK : EXIT_FAILURE_RUNTIME;
-}
-
-// Part of `mdcs demo`: writes its pictures and files into folder, appends a section to the summary md;
-// returns false when one of its consistency checks failed.
-inline bool demo_silhouette(const std::filesystem::path& folder, bool quick, bool quiet, Progress_bar& progress, std::ostream& md)
-{
-  using namespace sil_detail;
-  const std::string dir = MDCS_CGAL_MESH_DIR;
-  Mesh fine;
-  Run_parameters p;
-  bool generated = false;
-  const std::string name = quick ? "elephant.off" : "bunny00.off";
-  bool read = false;
-  if(!dir.empty()) {
-    try {
-      std::vector<std::string> notes;
-      load_geodesics_mesh(dir + "/" + name, fine, notes);
-      read = num_faces(fine) > 0;
-    } catch(const Input_error&) {
-      read = false;
-    }
-  }
-  if(read) {
-    p.name = name;
-    if(!quick) {
-      // The thesis's setting: a 20,000-face bunny and a 1,000-face coarse mesh.
-      SS::Coarse_mesh_options o;
-      o.target_faces = 20000;
-      o.smoothing_iterations = 0;
-      fine = SS::build_coarse_mesh(fine, o).mesh;
-      p.name = "bunny00.off simplified to 20k faces";
-    }
-  } else {
-    fine = generated_mesh(quick ? 4 : 5);
-    p.name = "generated bumpy sphere";
-    generated = true;
-  }
-  p.coarse_faces = quick ? 500 : 1000;
-  p.frames = quick ? 0 : 12;
-  p.up = 1;
-  const auto sub = folder / "silhouette";
-  prepare_output_folder(sub.string());
-  if(!quiet) std::cout << "== silhouette simplification\n";
-  const Run_summary s = run(fine, p, sub, progress, quiet);
-  md << "\n## Simplified silhouettes\n\n"
-     << p.name << (generated ? " (CGAL's meshes are not installed, so a generated surface is used)" : "") << ": "
-     << s.fine_faces << " faces, coarse mesh " << s.coarse_faces << " faces (preprocessing " << std::setprecision(3)
-     << s.preprocess_s << " s). One view ([silhouette/silhouette.svg](silhouette/silhouette.svg)):\n\n"
-     << "| silhouette | edges | loops | time (ms) |\n|---|---:|---:|---:|\n"
-     << "| fine | " << s.fine_edges << " | " << s.fine_loops << " | " << s.extract_ms << " (both meshes) |\n"
-     << "| coarse | " << s.coarse_edges << " | " << s.coarse_loops << " | |\n"
-     << "| loop picking (A) | " << s.picked_edges << " | " << s.picked_loops << " | " << s.picking_ms << " |\n"
-     << "| loop mapping (B, min cut) | " << s.mapped_edges << " | " << s.mapped_loops << " | " << s.mapping_ms << " |\n";
-  if(p.frames > 1)
-    md << "\nRotation: " << p.frames << " frames (`silhouette/frame_*.svg`). Temporal incoherence (change of the simplified "
-       << "silhouette / change of the true one, 0.5 degree steps): picking " << s.incoherence[0] << " (with the previous-frame "
-       << "bias " << s.incoherence[1] << "), mapping " << s.incoherence[2] << " (with the bias " << s.incoherence[3] << ").\n";
-  md << "\nChecks: every loop closed and made of mesh edges, picked edges on the fine silhouette: "
-     << (s.consistent ? "passed" : "FAILED (" + s.problems + ")") << ".\n";
-  return s.consistent;
-}
 
 } // namespace mdcs_cli
 

@@ -3,6 +3,7 @@
 #define MDCS_CLI_CMD_SURFACE_H
 
 #include "cli_common.h"
+#include "surface_pictures.h"
 
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
@@ -38,47 +39,53 @@ namespace mdcs_cli {
 
 namespace VM3 = CGAL::Variational_minimization;
 
-// Names of the options of `mdcs surface` that take no value.
-inline std::vector<std::string> surface_flags() { return {"quiet", "help", "relax", "basin-search"}; }
-
-inline const char* surface_usage()
+inline Command_spec surface_command_spec()
 {
-  return
-    "usage: mdcs surface [options]\n"
+  Command_spec s;
+  s.name = "surface";
+  s.synopsis = "[options]";
+  s.description =
     "Minimise F(f) = double integral of G(f, f_x, f_y, x, y) globally over the functions made of facets of a random\n"
     "plane arrangement (BSP cell complex, exact predicates), by a min-cut of the directed dual graph of its cells;\n"
-    "write the surface (PLY) and a height-coloured picture (SVG, PNG where rsvg-convert exists).\n"
-    "  --problem NAME      saddle (area, boundary f = x y on [-1,1]^2; default) | membrane (heavy membrane on a\n"
-    "                      wavy rim) | blobs (area weighted by a density with wells: many local minima, boundary\n"
-    "                      free in [0,1]) | scherk (area, f = ln(cos y / cos x) on [-1.2,1.2]^2; exact area known)\n"
-    "  --planes N          planes per arrangement (default 150)\n"
-    "  --segments S        boundary segments per side (per polygon edge) of the domain (default 4)\n"
-    "  --domain P          a polygonal domain instead of the problem's rectangle: \"x0,y0;x1,y1;...\" (a simple\n"
-    "                      polygon; vertices rounded to 1/256 of its bounding box) or L (an L inside the rectangle)\n"
-    "  --distribution D    slope (slope-limited, default) | isotropic\n"
-    "  --max-slope S       slope bound of slope-limited planes (default 3)\n"
-    "  --pencil-fraction F share of the planes through the boundary segments (default 0.2)\n"
-    "  --plane-selection K plane selection with K iterations (default 1: a single solve)\n"
-    "  --refine R          adaptive refinement: R runs give an envelope, a new arrangement of N planes keeps\n"
-    "                      their optima's planes and adds planes inside it (default 0: off)\n"
-    "  --tangent-rounds K  tangent-plane refinement: K more arrangements of N planes, each fitted to the previous\n"
-    "                      optimum (tangent planes, boundary pencils with its slope); the best round is kept\n"
-    "                      (default 0: off; for smooth minimisers such as scherk, with --segments 16)\n"
-    "  --fit-radius R      radius of those fits, share of the domain's shorter side (default 0.2)\n"
-    "  --relax             continue with local relaxation on 20^2, 40^2, 80^2 grids (L-BFGS; on a polygonal\n"
-    "                      domain: on Delaunay meshes of the polygon with the edge lengths of those grids)\n"
-    "  --basin-search      with --plane-selection K: relax every round optimum, then search neighbouring basins\n"
-    "                      by constrained cuts tile by tile, kept when their relaxed energy is lower (rectangles;\n"
-    "                      relaxed on 20^2, 40^2 grids; for many-minima problems such as blobs)\n"
-    "  --descents N        also N local descents from random smooth starts (L-BFGS on 20^2, 40^2 grids from a\n"
-    "                      bilinear function on a random 5 x 5 grid of heights), and a histogram of their\n"
-    "                      relaxed energies against the global result relaxed the same way: NAME_histogram.svg\n"
-    "                      (the thesis's Table 2.3 as a plot; rectangles only; default 0)\n"
-    "  --engine pf|pr|bk   max-flow engine: pseudoflow (default), push-relabel, Boykov-Kolmogorov\n"
-    "  --seed S            random seed (default 1)\n"
-    "  --output DIR        output folder (default mdcs-output); files NAME.ply/.svg/.png/_summary.txt\n"
-    "  --name NAME         base name of the output files (default: the problem name)\n"
-    "  --quiet             no progress bar\n";
+    "write the surface (PLY) and a height-coloured picture (SVG, PNG where rsvg-convert exists).\n";
+  s.options = {
+    text_option("problem", "NAME", "saddle", "saddle (area, boundary f = x y on [-1,1]^2) | membrane (heavy membrane on a\n"
+                "wavy rim) | blobs (area weighted by a density with wells: many local minima, boundary free\n"
+                "in [0,1]) | scherk (area, f = ln(cos y / cos x) on [-1.2,1.2]^2; exact area known)",
+                {"saddle", "membrane", "blobs", "scherk"}),
+    integer_option("planes", "N", "150", 1, 1000, "planes per arrangement (cells grow like N^3: 420 planes make 3.9M cells\n"
+                   "and 0.9 GB; 1000 planes about 50M cells and 12 GB)"),
+    integer_option("segments", "S", "4", 1, 256, "boundary segments per side (per polygon edge) of the domain"),
+    text_option("domain", "P", "", "a polygonal domain instead of the problem's rectangle: \"x0,y0;x1,y1;...\" (a simple\n"
+                "polygon, at most 1000 vertices; rounded to 1/256 of its bounding box) or L (an L inside\n"
+                "the rectangle)"),
+    text_option("distribution", "D", "slope", "slope (slope-limited) | isotropic", {"slope", "isotropic"}),
+    real_option("max-slope", "S", "3", 0, 1000, "slope bound of slope-limited planes (steeper planes are nearly vertical\n"
+                "over the domain)", true),
+    real_option("pencil-fraction", "F", "0.2", 0, 1, "share of the planes through the boundary segments"),
+    integer_option("plane-selection", "K", "1", 1, 1000, "plane selection with K iterations (1: a single solve)"),
+    integer_option("refine", "R", "0", 0, 100, "adaptive refinement: R runs give an envelope, a new arrangement of N planes\n"
+                   "keeps their optima's planes and adds planes inside it (0: off)"),
+    integer_option("tangent-rounds", "K", "0", 0, 1000, "tangent-plane refinement: K more arrangements of N planes, each fitted\n"
+                   "to the previous optimum; the best round is kept (0: off; for smooth minimisers such as\n"
+                   "scherk, with --segments 16)"),
+    real_option("fit-radius", "R", "0.2", 0, 1, "radius of those fits, share of the domain's shorter side", true),
+    flag_option("relax", "continue with local relaxation on 20^2, 40^2, 80^2 grids (L-BFGS; on a polygonal domain:\n"
+                "on Delaunay meshes of the polygon with the edge lengths of those grids)"),
+    flag_option("basin-search", "with --plane-selection K: relax every round optimum, then search neighbouring basins by\n"
+                "constrained cuts tile by tile (rectangles; for many-minima problems such as blobs)"),
+    integer_option("descents", "N", "0", 0, 10000, "also N local descents from random smooth starts and a histogram of their\n"
+                   "relaxed energies against the global result: NAME_histogram.svg (rectangles only)"),
+    text_option("engine", "E", "pf", "max-flow engine: pf (pseudoflow), pr (push-relabel), bk (Boykov-Kolmogorov)", {"pf", "pr", "bk"}),
+    integer_option("seed", "S", "1", 0, 4294967295.0, "random seed"),
+    text_option("name", "NAME", "", "base name of the output files (a plain file name; default: the problem name)"),
+  };
+  add_common_options(s, Common_options{"mdcs-output", true, true});
+  s.notes =
+    "Files in the output folder: NAME.ply (the discrete surface, 17 significant digits), NAME_relaxed.ply (--relax),\n"
+    "NAME.svg/.png and NAME_histogram.svg (not with --no-picture), NAME_summary.txt, NAME_summary.json.\n"
+    "Exit code 4: no function on this arrangement meets the boundary condition.\n";
+  return s;
 }
 
 struct Surface_settings
@@ -101,7 +108,8 @@ struct Surface_settings
   long seed = 1;
   std::string output = "mdcs-output";
   std::string name;
-  bool quiet = false;
+  bool picture = true;
+  std::string threads; // for the summary (empty: not printed)
 };
 
 struct Surface_run
@@ -119,7 +127,8 @@ struct Surface_run
   double exact = NAN;
   std::size_t cells = 0, facets = 0, vertices = 0, pencils = 0;
   double seconds_build = 0, seconds_weights = 0, seconds_cut = 0, seconds_relax = 0, seconds_total = 0;
-  std::string ply, svg, summary;
+  std::string ply, relaxed_ply, svg, summary, summary_file;
+  std::vector<std::string> files; // written, in order
   // --descents: relaxed energies of the random-start local descents and of the global result (same relaxation)
   std::vector<double> descent_energies;
   double global_descent_energy = NAN, seconds_descents = 0;
@@ -127,141 +136,43 @@ struct Surface_run
 };
 
 
-// An oblique view of a triangulated surface, painter's order, coloured by height and shaded; the boundary in red.
-inline void write_surface_svg(const std::string& path, const VM3::Minimal_surface_3& s, const VM3::Surface_problem_3& p,
-                              const std::string& title, const std::vector<std::string>& caption)
-{
-  const double az = 0.6, el = 0.55;
-  const double sx = p.domain.xmax() - p.domain.xmin(), sy = p.domain.ymax() - p.domain.ymin(), sz = p.zmax - p.zmin;
-  auto norm = [&](const std::array<double, 3>& q) {
-    return std::array<double, 3>{{(q[0] - p.domain.xmin()) / sx - 0.5, (q[1] - p.domain.ymin()) / sy - 0.5,
-                                  (q[2] - p.zmin) / sz * 0.7 - 0.35}};
-  };
-  auto project = [&](const std::array<double, 3>& q, double& u, double& v, double& depth) {
-    const auto n = norm(q);
-    const double a = std::cos(az) * n[0] - std::sin(az) * n[1];
-    const double b = std::sin(az) * n[0] + std::cos(az) * n[1];
-    u = 400 + 420 * a;
-    v = 380 - 420 * (n[2] * std::cos(el) + b * std::sin(el));
-    depth = b * std::cos(el) - n[2] * std::sin(el);
-  };
-  struct Tri { double depth; std::string svg; };
-  std::vector<Tri> tris;
-  for(const auto& t : s.triangles) {
-    double u[3], v[3], d[3];
-    double zc = 0;
-    for(int k = 0; k < 3; ++k) {
-      project(s.points[t[k]], u[k], v[k], d[k]);
-      zc += s.points[t[k]][2] / 3;
-    }
-    // Height colour (blue -> green -> yellow) and Lambert shading from the normal in normalised coordinates.
-    const auto a = norm(s.points[t[0]]), b = norm(s.points[t[1]]), c = norm(s.points[t[2]]);
-    double nx = (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]);
-    double ny = (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]);
-    double nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-    if(len == 0) continue;
-    if(nz < 0) { nx = -nx; ny = -ny; nz = -nz; }
-    const double shade = 0.55 + 0.45 * std::max(0.0, (-0.4 * nx - 0.3 * ny + 0.87 * nz) / len);
-    const double h = std::min(1.0, std::max(0.0, (zc - p.zmin) / sz));
-    const double r = (h < 0.5 ? 0.15 + 0.3 * h : 0.3 + 1.3 * (h - 0.5)) , g = 0.25 + 0.6 * h, bl = 0.65 - 0.5 * h;
-    auto c255 = [&](double x) { return int(std::min(255.0, std::max(0.0, 255 * x * shade))); };
-    std::ostringstream o;
-    o << std::fixed << std::setprecision(1) << "<polygon points='" << u[0] << ',' << v[0] << ' ' << u[1] << ','
-      << v[1] << ' ' << u[2] << ',' << v[2] << "' fill='rgb(" << c255(r) << ',' << c255(g) << ',' << c255(bl)
-      << ")' stroke='rgb(" << c255(r * 0.9) << ',' << c255(g * 0.9) << ',' << c255(bl * 0.9)
-      << ")' stroke-width='0.25'/>\n";
-    tris.push_back({(d[0] + d[1] + d[2]) / 3, o.str()});
-  }
-  std::sort(tris.begin(), tris.end(), [](const Tri& a, const Tri& b) { return a.depth > b.depth; });
-  std::ofstream out(path);
-  if(!out) throw std::runtime_error("cannot write " + path);
-  out << "<svg xmlns='http://www.w3.org/2000/svg' width='800' height='" << 700 + 18 * caption.size()
-      << "' viewBox='0 0 800 " << 700 + 18 * caption.size() << "'>\n<rect width='100%' height='100%' fill='white'/>\n";
-  out << "<text x='20' y='28' font-family='sans-serif' font-size='18'>" << title << "</text>\n";
-  // The domain's floor outline, then the surface, then the boundary curve.
-  std::vector<std::array<double, 2>> outline = p.domain_polygon;
-  if(!p.is_polygonal())
-    outline = {{{p.domain.xmin(), p.domain.ymin()}}, {{p.domain.xmax(), p.domain.ymin()}},
-               {{p.domain.xmax(), p.domain.ymax()}}, {{p.domain.xmin(), p.domain.ymax()}}};
-  {
-    out << "<polygon fill='none' stroke='#bbb' stroke-dasharray='4,3' points='";
-    for(const auto& c : outline) {
-      double u, v, d;
-      project({{c[0], c[1], p.zmin}}, u, v, d);
-      out << u << ',' << v << ' ';
-    }
-    out << "'/>\n";
-  }
-  for(const Tri& t : tris) out << t.svg;
-  if(!p.is_relaxed()) {
-    out << "<polyline fill='none' stroke='#d62728' stroke-width='2' points='";
-    const int m = 100;
-    for(std::size_t e = 0; e <= outline.size(); ++e) {
-      const auto& a = outline[e % outline.size()];
-      const auto& b = outline[(e + 1) % outline.size()];
-      for(int i = 0; i < (e == outline.size() ? 1 : m); ++i) {
-        const double f = double(i) / m, x = a[0] + f * (b[0] - a[0]), y = a[1] + f * (b[1] - a[1]);
-        double u, v, d;
-        project({{x, y, p.lower_boundary(x, y)}}, u, v, d);
-        out << u << ',' << v << ' ';
-      }
-    }
-    out << "'/>\n";
-  }
-  for(std::size_t i = 0; i < caption.size(); ++i)
-    out << "<text x='20' y='" << 700 + 18 * i << "' font-family='sans-serif' font-size='13'>" << caption[i] << "</text>\n";
-  out << "</svg>\n";
-}
-
-inline Surface_settings parse_surface_settings(const Options& o)
+inline Surface_settings parse_surface_settings(const Parsed_options& o)
 {
   Surface_settings s;
-  s.problem = o.text("problem", s.problem);
-  if(s.problem != "saddle" && s.problem != "membrane" && s.problem != "blobs" && s.problem != "scherk")
-    throw Usage_error("--problem must be saddle, membrane, blobs or scherk");
-  s.domain = o.text("domain", "");
+  s.problem = o.text("problem");
+  s.domain = o.text("domain");
   if(!s.domain.empty() && s.problem == "blobs") throw Usage_error("--domain is not available for --problem blobs");
-  s.planes = o.integer("planes", s.planes, 1);
-  s.segments = o.integer("segments", s.segments, 1);
-  if(s.segments > 256) throw Usage_error("--segments must be <= 256");
-  s.distribution = o.text("distribution", s.distribution);
-  if(s.distribution != "slope" && s.distribution != "isotropic")
-    throw Usage_error("--distribution must be slope or isotropic");
-  s.max_slope = o.number("max-slope", s.max_slope);
-  if(!(s.max_slope > 0)) throw Usage_error("--max-slope must be > 0");
-  s.pencil_fraction = o.number("pencil-fraction", s.pencil_fraction);
-  if(!(s.pencil_fraction >= 0 && s.pencil_fraction <= 1)) throw Usage_error("--pencil-fraction must be in [0, 1]");
-  s.plane_selection = o.integer("plane-selection", s.plane_selection, 1);
-  s.refine = o.integer("refine", s.refine, 0);
+  s.planes = long(o.integer("planes"));
+  s.segments = long(o.integer("segments"));
+  s.distribution = o.text("distribution");
+  if(s.distribution != "slope" && o.given("max-slope")) throw Usage_error("--max-slope applies to --distribution slope only");
+  s.max_slope = o.real("max-slope");
+  s.pencil_fraction = o.real("pencil-fraction");
+  s.plane_selection = long(o.integer("plane-selection"));
+  s.refine = long(o.integer("refine"));
   if(s.refine > 0 && s.plane_selection > 1) throw Usage_error("--refine and --plane-selection exclude each other");
-  s.tangent_rounds = o.integer("tangent-rounds", s.tangent_rounds, 0);
-  if(s.tangent_rounds > 1000) throw Usage_error("--tangent-rounds must be <= 1000");
+  s.tangent_rounds = long(o.integer("tangent-rounds"));
   if(s.tangent_rounds > 0 && (s.refine > 0 || s.plane_selection > 1))
     throw Usage_error("--tangent-rounds excludes --refine and --plane-selection");
-  s.fit_radius = o.number("fit-radius", s.fit_radius);
-  if(!(s.fit_radius > 0 && s.fit_radius <= 1)) throw Usage_error("--fit-radius must be in (0, 1]");
-  s.relax = o.has("relax");
-  o.text("relax", "");
-  s.basin_search = o.has("basin-search");
-  o.text("basin-search", "");
+  if(o.given("fit-radius") && s.tangent_rounds == 0) throw Usage_error("--fit-radius applies to --tangent-rounds only");
+  s.fit_radius = o.real("fit-radius");
+  s.relax = o.flag("relax");
+  s.basin_search = o.flag("basin-search");
   if(s.basin_search && !s.domain.empty()) throw Usage_error("--basin-search needs the problem's rectangle (not --domain)");
   if(s.basin_search && s.refine > 0) throw Usage_error("--basin-search and --refine exclude each other");
   if(s.basin_search && s.tangent_rounds > 0) throw Usage_error("--basin-search and --tangent-rounds exclude each other");
-  s.descents = o.integer("descents", s.descents, 0);
-  if(s.descents > 10000) throw Usage_error("--descents must be <= 10000");
+  s.descents = long(o.integer("descents"));
   if(s.descents > 0 && !s.domain.empty()) throw Usage_error("--descents needs the problem's rectangle (not --domain)");
-  s.engine = o.text("engine", s.engine);
-  if(s.engine != "pf" && s.engine != "pr" && s.engine != "bk") throw Usage_error("--engine must be pf, pr or bk");
-  s.seed = o.integer("seed", s.seed, 0);
-  s.output = o.text("output", s.output);
-  s.name = o.text("name", s.problem);
-  s.quiet = o.has("quiet");
-  o.text("quiet", "");
+  s.engine = o.text("engine");
+  s.seed = long(o.integer("seed"));
+  s.output = o.text("output");
+  s.name = checked_file_name(o.given("name") ? o.text("name") : s.problem, "--name");
+  s.picture = !o.flag("no-picture");
   return s;
 }
 
-// The polygon of --domain: "x0,y0;x1,y1;..." or L (an L-shaped hexagon filling three quarters of `box`).
+// The polygon of --domain: "x0,y0;x1,y1;..." (3 to 1000 vertices, finite coordinates) or L (an L-shaped hexagon
+// filling three quarters of `box`). Whether it is simple is checked by the problem (exit code 3 if not).
 inline std::vector<std::array<double, 2>> parse_surface_domain(const std::string& text, const CGAL::Bbox_2& box)
 {
   if(text == "L") {
@@ -270,16 +181,17 @@ inline std::vector<std::array<double, 2>> parse_surface_domain(const std::string
     return {{{x0, y0}}, {{x1, y0}}, {{x1, ym}}, {{xm, ym}}, {{xm, y1}}, {{x0, y1}}};
   }
   std::vector<std::array<double, 2>> out;
-  std::stringstream all(text);
-  std::string vertex;
-  while(std::getline(all, vertex, ';')) {
-    std::array<double, 2> v{{0, 0}};
-    std::stringstream one(vertex);
-    char comma = 0;
-    if(!(one >> v[0] >> comma >> v[1]) || comma != ',' || !(one >> std::ws).eof())
-      throw Usage_error("--domain: cannot read the vertex '" + vertex + "' (expected x,y; vertices separated by ';')");
-    out.push_back(v);
+  std::size_t start = 0;
+  while(start <= text.size()) {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    const std::string vertex = text.substr(start, end - start);
+    if(out.size() == 1000) throw Usage_error("--domain: more than 1000 vertices");
+    const std::vector<double> v = parse_real_list_text(vertex, "--domain (vertex " + std::to_string(out.size()) + ", expected x,y)",
+                                                       2, 2, -1e9, 1e9);
+    out.push_back({{v[0], v[1]}});
+    start = end + 1;
   }
+  if(out.size() < 3) throw Usage_error("--domain: a polygon needs at least 3 vertices \"x0,y0;x1,y1;x2,y2\" (or L)");
   return out;
 }
 
@@ -307,7 +219,7 @@ inline VM3::Surface_problem_3 surface_problem_for(const std::string& name, int s
 // random 5 x 5 grid of heights in [zmin, zmax] -- and the global result relaxed the same way, so that the
 // energies are comparable (the thesis's Table 2.3: how often local optimisation finds the global basin).
 template <class Functional>
-void run_surface_descents(const Surface_settings& s, const Functional& G, Surface_run& run, Progress_bar& progress)
+void run_surface_descents(const Surface_settings& s, const Functional& G, Surface_run& run, const Progress_bar& progress)
 {
   const auto t0 = std::chrono::steady_clock::now();
   VM3::Surface_relaxation_options_3 ro;
@@ -341,51 +253,8 @@ void run_surface_descents(const Surface_settings& s, const Functional& G, Surfac
 // relative): equal energies to that precision are the same basin.
 inline bool descent_is_lower(double descent, double global) { return descent < global - 1e-6 * std::abs(global); }
 
-// The histogram of the local descents' relaxed energies, the global result's energy marked (NAME_histogram.svg).
-inline void write_descent_histogram_svg(const std::string& path, const std::vector<double>& energies, double global,
-                                        const std::string& title)
-{
-  const int bins = 12;
-  double lo = global, hi = global;
-  for(double e : energies) { lo = (std::min)(lo, e); hi = (std::max)(hi, e); }
-  if(!(hi > lo)) hi = lo + 1e-9 * (1 + std::abs(lo));
-  const double width = (hi - lo) / bins;
-  std::vector<int> count(bins, 0);
-  for(double e : energies) ++count[std::size_t((std::min)(bins - 1, int((e - lo) / width)))];
-  const int top = (std::max)(1, *std::max_element(count.begin(), count.end()));
-  const double W = 720, H = 400, L = 60, R = 45, T = 50, B = 70, pw = W - L - R, ph = H - T - B;
-  std::ofstream f(path);
-  f << std::setprecision(6) << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
-    << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-    << "<text x=\"" << W / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << title << "</text>\n";
-  for(int b = 0; b < bins; ++b) {
-    const double h = ph * count[std::size_t(b)] / top, x = L + pw * b / bins;
-    f << "<rect x=\"" << x + 1 << "\" y=\"" << T + ph - h << "\" width=\"" << pw / bins - 2 << "\" height=\"" << h
-      << "\" fill=\"#7a9cc6\"/>\n";
-    if(count[std::size_t(b)] > 0)
-      f << "<text x=\"" << x + pw / bins / 2 << "\" y=\"" << T + ph - h - 4 << "\" text-anchor=\"middle\">"
-        << count[std::size_t(b)] << "</text>\n";
-  }
-  f << "<line x1=\"" << L << "\" y1=\"" << T + ph << "\" x2=\"" << L + pw << "\" y2=\"" << T + ph
-    << "\" stroke=\"black\"/>\n<line x1=\"" << L << "\" y1=\"" << T << "\" x2=\"" << L << "\" y2=\"" << T + ph
-    << "\" stroke=\"black\"/>\n";
-  for(int k = 0; k <= 4; ++k) {
-    const double e = lo + (hi - lo) * k / 4, x = L + pw * k / 4;
-    f << "<text x=\"" << x << "\" y=\"" << T + ph + 16 << "\" text-anchor=\"middle\">" << e << "</text>\n";
-  }
-  const double gx = L + pw * (global - lo) / (hi - lo);
-  f << "<line x1=\"" << gx << "\" y1=\"" << T - 6 << "\" x2=\"" << gx << "\" y2=\"" << T + ph
-    << "\" stroke=\"#c0392b\" stroke-width=\"3\"/>\n<text x=\"" << gx + 6 << "\" y=\"" << T - 10
-    << "\" fill=\"#c0392b\">global (min-cut) " << global << "</text>\n"
-    << "<text x=\"" << L + pw / 2 << "\" y=\"" << H - 28
-    << "\" text-anchor=\"middle\">relaxed energy (L-BFGS on 20^2, 40^2 grids); bars: " << energies.size()
-    << " local descents from random starts</text>\n"
-    << "<text x=\"14\" y=\"" << T + ph / 2 << "\" transform=\"rotate(-90 14 " << T + ph / 2
-    << ")\" text-anchor=\"middle\">runs</text>\n</svg>\n";
-}
-
 template <class Functional>
-void run_surface_with(const Surface_settings& s, const Functional& G, Surface_run& run, Progress_bar& progress)
+void run_surface_with(const Surface_settings& s, const Functional& G, Surface_run& run, const Progress_bar& progress)
 {
   VM3::Surface_plane_options_3 po;
   po.distribution = s.distribution == "slope" ? VM3::Plane_distribution_3::slope_limited
@@ -484,7 +353,31 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
   if(s.descents > 0 && run.surface.is_feasible) run_surface_descents(s, G, run, progress);
 }
 
-inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress)
+// Refuses a surface whose energy or points are not finite.
+inline void check_surface_result(const Surface_run& run)
+{
+  if(!run.surface.is_feasible) return;
+  if(!std::isfinite(run.surface.energy) || !std::isfinite(run.surface.solver_value))
+    throw Result_error("the minimal surface's energy is not finite (energy " + std::to_string(run.surface.energy) +
+                       ", cut value " + std::to_string(run.surface.solver_value) + ")");
+  for(const auto& p : run.surface.points)
+    if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) throw Result_error("the minimal surface has a point that is not finite");
+  if(run.has_relaxed && !std::isfinite(run.relaxed.energy)) throw Result_error("the relaxed energy is not finite");
+}
+
+// The surface as an ASCII PLY file (x, y, z with 17 significant digits; triangles oriented upwards).
+inline void write_surface_ply_checked(const std::string& path, const VM3::Minimal_surface_3& s)
+{
+  Output_file out(path);
+  out << "ply\nformat ascii 1.0\ncomment MDCS minimal discrete surface, energy " << s.energy
+      << "\nelement vertex " << s.points.size() << "\nproperty double x\nproperty double y\nproperty double z\n"
+      << "element face " << s.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for(const auto& p : s.points) out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  for(const auto& t : s.triangles) out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  out.commit();
+}
+
+inline Surface_run run_surface(const Surface_settings& s, const Progress_bar& progress)
 {
   const auto t_start = std::chrono::steady_clock::now();
   Surface_run run;
@@ -510,6 +403,7 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
     if(s.problem == "scherk" && s.domain.empty()) run.exact = VM3::scherk_surface_area(1.2, 80);
   }
   run.seconds_total = seconds_since(t_start);
+  check_surface_result(run);
   const std::filesystem::path folder = prepare_output_folder(s.output);
   std::ostringstream sum;
   sum << std::setprecision(10);
@@ -520,9 +414,12 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
       << ", seed " << s.seed << ")\n"
       << "domain            " << (run.problem.is_polygonal() ? "polygon with " + std::to_string(run.problem.domain_polygon.size()) + " vertices, area " + (std::ostringstream() << run.problem.domain_area()).str() : std::string("rectangle")) << "\n"
       << "complex           " << run.cells << " cells, " << run.facets << " facets, " << run.vertices << " vertices\n";
+  run.summary_file = (folder / (s.name + "_summary.txt")).string();
   if(!run.surface.is_feasible) {
-    sum << "result            INFEASIBLE: no function on this arrangement meets the boundary condition\n";
+    sum << "result            INFEASIBLE: no function on this arrangement meets the boundary condition\n"
+        << "files             " << run.summary_file << ", " << (folder / (s.name + "_summary.json")).string() << "\n";
     run.summary = sum.str();
+    write_text_file(run.summary_file, run.summary);
     return run;
   }
   const double gap = std::abs(run.surface.energy - run.surface.solver_value) / run.surface.energy;
@@ -570,23 +467,31 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
       << " s, cut " << run.seconds_cut << " s" << (run.has_relaxed ? ", relaxation " : "");
   if(run.has_relaxed) sum << run.seconds_relax << " s";
   sum << ", total " << run.seconds_total << " s\n";
+  progress.begin("writing the outputs");
   run.ply = (folder / (s.name + ".ply")).string();
-  VM3::write_surface_ply(run.ply, run.surface);
-  const VM3::Minimal_surface_3& shown = run.has_relaxed ? VM3::grid_surface_mesh_3(run.problem, run.relaxed) : run.surface;
-  if(run.has_relaxed) VM3::write_surface_ply((folder / (s.name + "_relaxed.ply")).string(), shown);
-  run.svg = (folder / (s.name + ".svg")).string();
-  std::ostringstream cap1, cap2;
-  cap1 << std::setprecision(8) << run.cells << " cells from " << s.planes << " planes; discrete energy "
-       << run.surface.energy << (run.has_relaxed ? ", relaxed " : "");
-  if(run.has_relaxed) cap1 << run.relaxed.energy;
-  const std::string relaxed_on = run.relaxed.triangles.empty()
-                                   ? std::to_string(run.relaxed.n) + "^2 grid"
-                                   : std::to_string(run.relaxed.triangles.size()) + "-triangle mesh";
-  cap2 << (run.has_relaxed ? "relaxed surface shown (" + relaxed_on + ")" : "discrete surface shown")
-       << (run.problem.is_relaxed() ? "; boundary free in the band" : "; boundary curve in red");
-  write_surface_svg(run.svg, run.has_relaxed ? VM3::grid_surface_mesh_3(run.problem, run.relaxed) : run.surface,
-                    run.problem, "mdcs surface: " + s.problem, {cap1.str(), cap2.str()});
-  svg_to_png(run.svg);
+  write_surface_ply_checked(run.ply, run.surface);
+  run.files.push_back(run.ply);
+  const VM3::Minimal_surface_3 shown = run.has_relaxed ? VM3::grid_surface_mesh_3(run.problem, run.relaxed) : run.surface;
+  if(run.has_relaxed) {
+    run.relaxed_ply = (folder / (s.name + "_relaxed.ply")).string();
+    write_surface_ply_checked(run.relaxed_ply, shown);
+    run.files.push_back(run.relaxed_ply);
+  }
+  if(s.picture) {
+    run.svg = (folder / (s.name + ".svg")).string();
+    std::ostringstream cap1, cap2;
+    cap1 << std::setprecision(8) << run.cells << " cells from " << s.planes << " planes; discrete energy "
+         << run.surface.energy << (run.has_relaxed ? ", relaxed " : "");
+    if(run.has_relaxed) cap1 << run.relaxed.energy;
+    const std::string relaxed_on = run.relaxed.triangles.empty()
+                                     ? std::to_string(run.relaxed.n) + "^2 grid"
+                                     : std::to_string(run.relaxed.triangles.size()) + "-triangle mesh";
+    cap2 << (run.has_relaxed ? "relaxed surface shown (" + relaxed_on + ")" : "discrete surface shown")
+         << (run.problem.is_relaxed() ? "; boundary free in the band" : "; boundary curve in red");
+    write_surface_svg(run.svg, shown, run.problem, "mdcs surface: " + s.problem, {cap1.str(), cap2.str()});
+    run.files.push_back(run.svg);
+    if(svg_to_png(run.svg)) run.files.push_back((folder / (s.name + ".png")).string());
+  }
   if(!run.descent_energies.empty()) {
     std::vector<double> sorted = run.descent_energies;
     std::sort(sorted.begin(), sorted.end());
@@ -596,94 +501,52 @@ inline Surface_run run_surface(const Surface_settings& s, Progress_bar& progress
         << sorted.front() << ", median " << sorted[sorted.size() / 2] << "; global result relaxed the same way "
         << run.global_descent_energy << " (" << lower << " of the descents lower by more than 1e-6 relative); " << std::setprecision(3)
         << run.seconds_descents << " s\n";
-    run.histogram_svg = (folder / (s.name + "_histogram.svg")).string();
-    write_descent_histogram_svg(run.histogram_svg, run.descent_energies, run.global_descent_energy,
-                                "mdcs surface " + s.problem + ": local descents vs the global result");
-    svg_to_png(run.histogram_svg);
+    if(s.picture) {
+      run.histogram_svg = (folder / (s.name + "_histogram.svg")).string();
+      write_descent_histogram_svg(run.histogram_svg, run.descent_energies, run.global_descent_energy,
+                                  "mdcs surface " + s.problem + ": local descents vs the global result");
+      run.files.push_back(run.histogram_svg);
+      if(svg_to_png(run.histogram_svg)) run.files.push_back((folder / (s.name + "_histogram.png")).string());
+    }
   }
-  sum << "files             " << run.ply << ", " << run.svg << (run.histogram_svg.empty() ? "" : ", " + run.histogram_svg)
-      << "\n";
+  if(!s.threads.empty()) sum << "threads           " << s.threads << "\n";
+  progress.end();
+  sum << "files             ";
+  for(const std::string& f : run.files) sum << f << ", ";
+  sum << run.summary_file << ", " << (folder / (s.name + "_summary.json")).string() << "\n";
   run.summary = sum.str();
-  std::ofstream((folder / (s.name + "_summary.txt")).string()) << run.summary;
+  write_text_file(run.summary_file, run.summary);
   return run;
 }
 
-inline int command_surface(const Options& o)
+// The run as data: NAME_summary.json.
+inline void write_surface_json(const Surface_settings& s, const Surface_run& run, Invocation& inv, int exit_code)
 {
-  if(o.has("help")) {
-    std::cout << surface_usage();
-    return EXIT_OK;
+  Run_summary_json j;
+  j.inputs.add("problem", s.problem).add("domain", s.domain.empty() ? std::string("rectangle") : s.domain);
+  j.timings.add("build", run.seconds_build).add("weights", run.seconds_weights).add("cut", run.seconds_cut)
+    .add("relaxation", run.seconds_relax).add("descents", run.seconds_descents);
+  Json_object complex;
+  complex.add("cells", (unsigned long long)run.cells).add("facets", (unsigned long long)run.facets)
+    .add("vertices", (unsigned long long)run.vertices).add("pencil_planes", (unsigned long long)run.pencils);
+  j.results.add("complex", complex).add("feasible", bool(run.surface.is_feasible));
+  if(run.surface.is_feasible) {
+    j.results.add("energy", run.surface.energy).add("cut_value", run.surface.solver_value)
+      .add("projected_area_over_domain_area", run.surface.projected_area / run.problem.domain_area())
+      .add("surface_facets", (unsigned long long)run.surface.facets.size())
+      .add("surface_triangles", (unsigned long long)run.surface.triangles.size()).add("exact_area", run.exact)
+      .add("surface_ply", run.ply);
+    if(run.has_relaxed) j.results.add("relaxed_energy", run.relaxed.energy).add("relaxed_ply", run.relaxed_ply);
+    if(!run.selection_energies.empty()) j.results.raw("plane_selection_energies", json_numbers(run.selection_energies));
+    if(!run.refine_energies.empty()) j.results.raw("refinement_run_energies", json_numbers(run.refine_energies));
+    if(!run.tangent_energies.empty())
+      j.results.raw("tangent_round_energies", json_numbers(run.tangent_energies)).add("tangent_best_round", run.tangent_best);
+    if(!run.descent_energies.empty())
+      j.results.raw("descent_energies", json_numbers(run.descent_energies)).add("global_relaxed_like_descents", run.global_descent_energy);
   }
-  const Surface_settings s = parse_surface_settings(o);
-  o.reject_unknown();
-  if(!o.positional().empty()) throw Usage_error("unexpected argument '" + o.positional().front() + "'");
-  Progress_bar progress(s.quiet);
-  const Surface_run run = run_surface(s, progress);
-  std::cout << run.summary;
-  return run.surface.is_feasible ? EXIT_OK : EXIT_INFEASIBLE;
-}
-
-// Part of `mdcs demo`: writes its pictures and files into folder, appends a section to the summary md;
-// returns false when one of its consistency checks failed.
-inline bool demo_surface(const std::filesystem::path& folder, bool quick, bool quiet, Progress_bar& progress, std::ostream& md)
-{
-  bool ok = true;
-  md << "\n## Minimal surfaces (bivariate problems)\n\nEach surface is the min-cut of the directed dual graph of a random "
-        "plane arrangement (BSP complex with exact predicates); the cut value must equal the surface energy and the "
-        "surface must be single-valued over the domain.\n\n"
-        "| problem | planes | cells | discrete energy | cut gap | relaxed | exact | time (s) | picture |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
-  struct Demo { const char* problem; long planes; long selection; bool relax; const char* domain; };
-  const std::vector<Demo> runs = quick ? std::vector<Demo>{{"saddle", 60, 1, false, ""}, {"scherk", 60, 1, true, ""},
-                                                           {"saddle", 60, 1, false, "L"}}
-                                       : std::vector<Demo>{{"saddle", 120, 1, true, ""}, {"membrane", 120, 1, false, ""},
-                                                           {"scherk", 140, 1, true, ""}, {"blobs", 90, 3, true, ""},
-                                                           {"saddle", 120, 1, true, "L"}};
-  std::ostringstream hist;
-  for(const Demo& d : runs) {
-    Surface_settings s;
-    s.problem = d.problem;
-    s.planes = d.planes;
-    s.plane_selection = d.selection;
-    s.relax = d.relax;
-    s.domain = d.domain;
-    if(std::string(d.problem) == "blobs") s.descents = 8; // the histogram of Table 2.3, at a small size
-    s.output = folder.string();
-    s.name = std::string("surface_") + d.problem + (s.domain.empty() ? "" : "_" + s.domain);
-    s.quiet = quiet;
-    const Surface_run r = run_surface(s, progress);
-    std::cout << "== surface " << d.problem << "\n" << r.summary << "\n";
-    if(!r.surface.is_feasible) {
-      ok = false;
-      md << "| " << d.problem << " | " << d.planes << " | " << r.cells << " | INFEASIBLE | | | | | |\n";
-      continue;
-    }
-    const double gap = std::abs(r.surface.energy - r.surface.solver_value) / r.surface.energy;
-    const double single = std::abs(r.surface.projected_area - r.problem.domain_area()) / r.problem.domain_area();
-    if(gap > 1e-9 || single > 1e-9) ok = false;
-    std::ostringstream row;
-    row << std::setprecision(8) << "| " << d.problem << (s.domain.empty() ? "" : " (" + s.domain + "-shaped domain)") << (d.selection > 1 ? " (plane selection x" + std::to_string(d.selection) + ")" : "")
-        << " | " << d.planes << " | " << r.cells << " | " << r.surface.energy << " | " << std::setprecision(2) << gap
-        << " | " << std::setprecision(8);
-    if(r.has_relaxed) row << r.relaxed.energy;
-    else row << "-";
-    row << " | ";
-    if(std::isfinite(r.exact)) row << r.exact;
-    else row << "-";
-    row << " | " << std::setprecision(3) << r.seconds_total << " | [" << s.name << ".svg](" << s.name << ".svg) |\n";
-    md << row.str();
-    if(!r.histogram_svg.empty()) {
-      std::size_t lower = 0;
-      for(double e : r.descent_energies) lower += descent_is_lower(e, r.global_descent_energy) ? 1 : 0;
-      hist << "\nBlob problem (thesis Table 2.3 as a plot): " << r.descent_energies.size()
-           << " local descents from random smooth starts against the global result, all relaxed on 20^2, 40^2 grids: "
-           << lower << " of them end lower than the global result. [" << s.name << "_histogram.svg](" << s.name
-           << "_histogram.svg)\n";
-    }
-  }
-  md << hist.str();
-  (void)progress;
-  return ok;
+  j.files = run.files;
+  if(!run.summary_file.empty()) j.files.push_back(run.summary_file);
+  j.write((std::filesystem::path(s.output) / (s.name + "_summary.json")).string(), inv, exit_code);
 }
 
 } // namespace mdcs_cli

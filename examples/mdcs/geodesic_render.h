@@ -4,13 +4,14 @@
 #ifndef MDCS_CLI_GEODESIC_RENDER_H
 #define MDCS_CLI_GEODESIC_RENDER_H
 
+#include "cli_output.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -214,11 +215,15 @@ inline void write_geodesic_svg(const std::string& file, Geodesic_picture& pic)
   const bool seams = order.size() <= 60000; // a stroke in the face colour hides the anti-aliasing seams
 
   const double maxd = pic.max_distance;
+  if(!std::isfinite(maxd)) throw std::logic_error("mdcs: write_geodesic_svg: the largest distance is not finite");
   const double spacing = maxd > 0 ? nice_spacing(maxd, pic.levels) : 0;
   pic.iso_spacing = spacing;
+  // nice_spacing() keeps the number of levels within about 2.5 times those asked for; this is a hard bound.
+  const double max_level = spacing > 0 ? std::min(std::floor(maxd / spacing), 3.0 * double(pic.levels) + 3) : 0;
 
-  std::ofstream out(file);
-  if(!out) throw std::runtime_error("cannot write '" + file + "'");
+  Output_file svg_file(file);
+  std::ostream& out = svg_file.stream();
+  out.precision(6);
   const double legend_top = top + plot_h + 16;
   const double H = legend_top + 58 + 19 * double(pic.caption_lines.size()) + 8;
   char buf[256];
@@ -254,7 +259,8 @@ inline void write_geodesic_svg(const std::string& file, Geodesic_picture& pic)
     // Iso-lines: a segment per level crossing the face, by linear interpolation of the vertex distances.
     const double lo = std::min({d0, d1, d2}), hi = std::max({d0, d1, d2});
     std::string minor, major;
-    for(long k = std::max(1L, long(std::ceil(lo / spacing))); double(k) * spacing <= hi; ++k) {
+    const long k_last = long(std::min(std::floor(hi / spacing), max_level)); // bounded by the levels asked for
+    for(long k = std::max(1L, long(std::ceil(std::min(lo / spacing, max_level + 1)))); k <= k_last; ++k) {
       const double level = double(k) * spacing;
       double ex[2], ey[2];
       int found = 0;
@@ -363,7 +369,7 @@ inline void write_geodesic_svg(const std::string& file, Geodesic_picture& pic)
   if(maxd > 0) {
     std::vector<double> ticks = {0};
     if(spacing > 0)
-      for(long k = 5; double(k) * spacing <= maxd * (1 + 1e-9); k += 5) ticks.push_back(double(k) * spacing);
+      for(long k = 5; double(k) <= max_level + 1e-9; k += 5) ticks.push_back(double(k) * spacing);
     if(ticks.size() < 3) ticks.push_back(maxd);
     for(double v : ticks) {
       const double x = bar_x + bar_w * v / maxd;
@@ -386,38 +392,9 @@ inline void write_geodesic_svg(const std::string& file, Geodesic_picture& pic)
   for(std::size_t i = 0; i < pic.caption_lines.size(); ++i)
     out << "<text x=\"" << bar_x << "\" y=\"" << legend_top + 62 + 19 * double(i) << "\" font-size=\"13\">" << xml_escape(pic.caption_lines[i]) << "</text>\n";
   out << "</svg>\n";
-  if(!out) throw std::runtime_error("cannot write '" + file + "'");
+  svg_file.commit();
 }
 
-
-// ASCII PLY with the distance of every vertex (-1: unreachable) and its colour in the picture's map. `what` names
-// the distance in the header's comment (e.g. "exact geodesic distance").
-inline void write_distance_ply(const std::string& file, const std::vector<Geo_vec>& points,
-                               const std::vector<std::array<std::size_t, 3>>& triangles, const std::vector<double>& distance,
-                               double max_distance, const std::string& what = "exact geodesic distance")
-{
-  std::ofstream out(file);
-  if(!out) throw std::runtime_error("cannot write '" + file + "'");
-  out << "ply\nformat ascii 1.0\n"
-      << "comment mdcs geodesics: " << what << " to the nearest source; distance -1 = unreachable\n"
-      << "element vertex " << points.size() << "\n"
-      << "property float x\nproperty float y\nproperty float z\nproperty float distance\n"
-      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-      << "element face " << triangles.size() << "\n"
-      << "property list uchar int vertex_indices\nend_header\n";
-  char buf[160];
-  for(std::size_t i = 0; i < points.size(); ++i) {
-    const Geo_vec& p = points[i];
-    const double dv = distance[i];
-    const bool reached = std::isfinite(dv);
-    const auto c = reached && max_distance > 0 ? geo_detail::colour_map(dv / max_distance) : geo_detail::unreachable_colour();
-    std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g %.9g %d %d %d\n", p[0], p[1], p[2], reached ? dv : -1.0,
-                  int(std::lround(255 * c[0])), int(std::lround(255 * c[1])), int(std::lround(255 * c[2])));
-    out << buf;
-  }
-  for(const auto& t : triangles) out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-  if(!out) throw std::runtime_error("cannot write '" + file + "'");
-}
 
 } // namespace mdcs_cli
 

@@ -11,12 +11,16 @@ scratch folder of the case, {cgal} CGAL's mesh folder (cases that use it are ski
 Arguments are split like a shell would (shlex), without a shell. Checks, separated by ';':
     stderr~TEXT      stderr contains TEXT              stdout~TEXT   stdout contains TEXT
     file:PATH        PATH (with placeholders) exists   nofile:PATH   PATH does not exist
+    nostderr~TEXT    stderr does not contain TEXT      contains:PATH~TEXT   the file PATH contains TEXT
+    fsize:BYTES      run with a file size limit (RLIMIT_FSIZE): writes beyond BYTES fail like a full disk
+    json:PATH:KEY=V  the JSON file PATH has V (compared as text) at the dotted KEY, e.g. results.reachable_vertices
 
 usage: run_cli_cases.py MDCS_EXECUTABLE CASE_FILE... [--cgal DIR] [--memory-mib N] [--filter TEXT] [--list]
 The memory limit (address space, default 4096 MiB) is not applied to sanitizer builds, whose shadow memory
 needs far more address space; there the time limit still catches unbounded growth.
 """
 import argparse
+import json
 import os
 import resource
 import shlex
@@ -65,11 +69,15 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
         env["UBSAN_OPTIONS"] = f"exitcode={SANITIZER_EXIT['ubsan']}:print_stacktrace=1:halt_on_error=1"
         env["LSAN_OPTIONS"] = f"exitcode={SANITIZER_EXIT['lsan']}"
 
+        fsize = [int(c.partition(":")[2]) for c in case["checks"] if c.startswith("fsize:")]
+
         def limits():
             os.setsid()
             if not sanitized and memory_mib > 0:
                 limit = memory_mib * 1024 * 1024
                 resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+            if fsize:
+                resource.setrlimit(resource.RLIMIT_FSIZE, (fsize[0], fsize[0]))
 
         start = time.monotonic()
         proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp, env=env,
@@ -103,7 +111,30 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
                 problems.append(f"file '{value}' missing")
             elif kind == "nofile" and os.path.exists(os.path.join(tmp, value)):
                 problems.append(f"file '{value}' should not exist")
-            elif kind not in ("stderr", "stdout", "file", "nofile"):
+            elif kind == "nostderr" and value in err:
+                problems.append(f"stderr has '{value}'")
+            elif kind.startswith("contains:"):
+                path = substitute(kind[len("contains:"):], tmp, cgal)
+                try:
+                    with open(os.path.join(tmp, path), encoding="utf-8", errors="replace") as f:
+                        if value not in f.read():
+                            problems.append(f"file '{path}' lacks '{value}'")
+                except OSError as e:
+                    problems.append(f"cannot read '{path}' ({e})")
+            elif kind == "json":
+                path, _, expected = value.rpartition(":")
+                key, _, wanted = expected.partition("=")
+                try:
+                    with open(os.path.join(tmp, path), encoding="utf-8") as f:
+                        node = json.load(f)
+                    for part in key.split("."):
+                        node = node[int(part)] if isinstance(node, list) else node[part]
+                    got = json.dumps(node) if not isinstance(node, str) else node
+                    if got != wanted:
+                        problems.append(f"{path}: {key} is {got}, expected {wanted}")
+                except (OSError, ValueError, KeyError, IndexError, TypeError) as e:
+                    problems.append(f"{path}: cannot read {key} ({e})")
+            elif kind not in ("stderr", "stdout", "file", "nofile", "fsize", "nostderr") and not kind.startswith("contains:"):
                 problems.append(f"unknown check '{check}'")
         if problems:
             tail = "\n      ".join(err.strip().splitlines()[-6:])

@@ -1,8 +1,6 @@
-// The geodesics section of `mdcs demo` (cmd_demo.h): exact distances and paths checked against CGAL's
+// The geodesics section of `mdcs demo` (cmd_demo.h, demo_sections.h): exact distances and paths checked against CGAL's
 // Surface_mesh_shortest_path, and the flat-exact approximation with its error.
-#ifndef MDCS_CLI_DEMO_GEODESICS_H
-#define MDCS_CLI_DEMO_GEODESICS_H
-
+#include "demo_sections.h"
 #include "cmd_geodesics.h"
 
 #include <filesystem>
@@ -31,7 +29,7 @@ inline void md_flat_row(std::ostream& md, const std::string& mesh, const std::st
 // torus when CGAL's data is missing; with the dragon too unless --quick), compared with
 // Surface_mesh_shortest_path, then the same with the flat-exact approximation (its time and its error against the
 // exact run). Appends to summary.md; returns whether the checks passed.
-inline bool demo_geodesics(const std::filesystem::path& folder, bool quick, bool quiet, Progress_bar& progress, std::ostream& md)
+bool demo_geodesics(const std::filesystem::path& folder, bool quick, const Progress_bar& progress, std::ostream& md)
 {
   const std::string dir = MDCS_CGAL_MESH_DIR;
   std::vector<std::string> meshes;
@@ -70,7 +68,7 @@ inline bool demo_geodesics(const std::filesystem::path& folder, bool quick, bool
     Geodesics_settings s;
     s.mesh = path;
     s.compare_cgal = true;
-    s.quiet = quiet;
+    s.export_data = false; // the demo shows pictures; the command writes the data files
     const std::string stem = path[0] == '@' ? path.substr(1) : std::filesystem::path(path).stem().string();
     // Three-quarter views that show the animals' sides (both are y-up), and the torus from above.
     s.view = stem == "elephant" ? Geo_vec{{0.45, 0.3, 1}} : stem == "ChineseDragon-10kv" ? Geo_vec{{1, 0.35, 0.75}} : Geo_vec{{0.3, 1, 0.8}};
@@ -160,4 +158,3 @@ inline bool demo_geodesics(const std::filesystem::path& folder, bool quick, bool
 
 } // namespace mdcs_cli
 
-#endif // MDCS_CLI_DEMO_GEODESICS_H

@@ -1,0 +1,22 @@
+// `mdcs geodesics`: its option table (geodesics_options.h) and its run (cmd_geodesics.h).
+#include "cmd_geodesics.h"
+#include "commands.h"
+
+#include <iostream>
+
+namespace mdcs_cli {
+
+Command_spec geodesics_spec() { return geodesics_command_spec(); }
+
+int run_geodesics_command(Invocation& run)
+{
+  Geodesics_settings s = parse_geodesics_settings(run.options);
+  s.threads = threads_text(run.threads);
+  Geodesics_run r = run_geodesics(s, run.progress);
+  Run_summary_json json = geodesics_summary_json(s, r);
+  json.write((std::filesystem::path(s.output) / "summary.json").string(), run, EXIT_OK);
+  std::cout << r.summary;
+  return EXIT_OK;
+}
+
+} // namespace mdcs_cli

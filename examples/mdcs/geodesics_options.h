@@ -1,0 +1,188 @@
+// The options of `mdcs geodesics`: the method (--method), the settings of a run and the option table that
+// drives both the parser and the help text.
+#ifndef MDCS_CLI_GEODESICS_OPTIONS_H
+#define MDCS_CLI_GEODESICS_OPTIONS_H
+
+#include "cli_common.h"
+#include "geodesic_render.h" // Geo_vec, number_text
+
+#include <string>
+
+namespace mdcs_cli {
+
+// The distance method of `--method`.
+enum class Geo_method_kind { exact, flat_exact, merged, fmm, dijkstra, heat, heat_idt };
+
+struct Geo_method
+{
+  Geo_method_kind kind = Geo_method_kind::exact;
+  double merge_eps = 0; // merged: the tolerance in units of the mean edge length
+  std::string text = "exact";
+
+  bool is_heat() const { return kind == Geo_method_kind::heat || kind == Geo_method_kind::heat_idt; }
+  bool is_exact() const { return kind == Geo_method_kind::exact; }
+  bool has_windows() const { return kind == Geo_method_kind::exact || kind == Geo_method_kind::merged; }
+  // A short description, e.g. for the picture's title: "<description> on MESH".
+  std::string description() const
+  {
+    switch(kind) {
+    case Geo_method_kind::exact: return "exact geodesic distances";
+    case Geo_method_kind::flat_exact: return "flat-exact geodesic distances";
+    case Geo_method_kind::merged: return "merged-window geodesic distances (tolerance " + geo_detail::number_text(merge_eps, 3) + " x mean edge)";
+    case Geo_method_kind::fmm: return "fast marching geodesic distances";
+    case Geo_method_kind::dijkstra: return "Dijkstra distances along edges";
+    case Geo_method_kind::heat: return "heat method distances (CGAL, direct)";
+    case Geo_method_kind::heat_idt: return "heat method distances (CGAL, intrinsic Delaunay)";
+    }
+    return text;
+  }
+  // The class that computes it.
+  std::string class_name() const
+  {
+    switch(kind) {
+    case Geo_method_kind::exact: return "CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3";
+    case Geo_method_kind::flat_exact: return "CGAL::Polyhedral_geodesics_3::Flat_exact_geodesic_distances_3";
+    case Geo_method_kind::merged: return "CGAL::Polyhedral_geodesics_3::Merged_window_geodesic_distances_3";
+    case Geo_method_kind::fmm: return "CGAL::Polyhedral_geodesics_3::Fast_marching_geodesic_distances_3";
+    case Geo_method_kind::dijkstra: return "CGAL::Polyhedral_geodesics_3::Dijkstra_geodesic_distances_3";
+    case Geo_method_kind::heat: return "CGAL::Heat_method_3::Surface_mesh_geodesic_distances_3<Direct>";
+    case Geo_method_kind::heat_idt: return "CGAL::Heat_method_3::Surface_mesh_geodesic_distances_3<Intrinsic_Delaunay>";
+    }
+    return text;
+  }
+};
+
+inline Geo_method parse_geo_method(const std::string& text)
+{
+  Geo_method m;
+  m.text = text;
+  if(text == "exact") m.kind = Geo_method_kind::exact;
+  else if(text == "flat-exact") m.kind = Geo_method_kind::flat_exact;
+  else if(text == "fmm") m.kind = Geo_method_kind::fmm;
+  else if(text == "dijkstra") m.kind = Geo_method_kind::dijkstra;
+  else if(text == "heat") m.kind = Geo_method_kind::heat;
+  else if(text == "heat-idt") m.kind = Geo_method_kind::heat_idt;
+  else if(text.compare(0, 7, "merged:") == 0) {
+    m.kind = Geo_method_kind::merged;
+    const std::string eps = text.substr(7);
+    m.merge_eps = parse_real_text(eps, "--method merged:EPS (the tolerance in mean edge lengths)", 0, 1000);
+  } else {
+    throw Usage_error("--method must be exact, flat-exact, merged:EPS, fmm, dijkstra, heat or heat-idt (got '" + text + "')");
+  }
+  return m;
+}
+
+struct Geodesics_settings
+{
+  std::string mesh;
+  std::string sources, targets;
+  double limit = -1; // < 0: none
+  bool stop_at_targets = false;
+  bool full_field = true;
+  Geo_vec view = {{1, 1, 1}}, up = {{0, 1, 0}};
+  long levels = 20;
+  Geo_method method;
+  bool compare_exact = false;
+  bool compare_cgal = false;
+  bool shorten_paths = false;
+  std::string output = "mdcs-output";
+  bool picture = true;
+  bool export_data = true; // paths.json/.csv, isolines.csv (the demo's runs skip them)
+  std::string threads;      // for the summary (empty: not printed)
+  bool repair = false;      // --repair: CGAL's soup repair on a file that is not a valid mesh
+};
+
+inline Command_spec geodesics_command_spec()
+{
+  Command_spec s;
+  s.name = "geodesics";
+  s.synopsis = "MESH --source SPEC [options]";
+  s.description =
+    "Geodesic distances on a triangle mesh from one or more sources (CGAL::Polyhedral_geodesics_3: exact interval\n"
+    "propagation by default, or an approximate method), shortest paths to targets, a picture, and the results as\n"
+    "data: every distance (PLY, 17 significant digits), the paths and the iso-distance lines (JSON, CSV).\n";
+  s.positionals = {{"MESH", "OFF, PLY, OBJ or STL file, or @torus / @icosphere (generated meshes). The file must be a\n"
+                            "valid oriented manifold mesh: otherwise mdcs refuses it (exit 3) and says why (an edge\n"
+                            "shared by 3 faces, a pinched vertex, inconsistent orientation, a Moebius strip, an index\n"
+                            "out of range, ...). Faces with more than three corners are triangulated (with a note).\n"
+                            "Vertex indices are the file's; face indices the file's for a triangle mesh\n"
+                            "(distances.ply lists the mesh as used)."}};
+  s.min_positionals = s.max_positionals = 1;
+  s.options = {
+    text_option("source", "SPEC", "", "comma-separated sources (required): vertex indices (0,17) and/or surface points\n"
+                "f:FACE:B0:B1:B2 (weights of the face's corners in the order distances.ply lists them;\n"
+                ">= 0, normalised)"),
+    text_option("targets", "SPEC", "", "shortest paths to these points, same syntax (default: the farthest reachable vertex)"),
+    text_option("method", "M", "exact", "exact: interval (window) propagation, Exact_geodesic_distances_3\n"
+                "flat-exact: one interval per edge (thesis ch. 4.3)\n"
+                "merged:EPS: windows merged when their distances differ by at most EPS (0 to 1000)\n"
+                "  times the mean edge length (thesis ch. 4.2; merged:0 is exact)\n"
+                "fmm: fast marching (Kimmel-Sethian) | dijkstra: shortest paths along mesh edges\n"
+                "heat, heat-idt: CGAL::Heat_method_3 (direct / intrinsic Delaunay), run on every\n"
+                "  connected component that holds a source; vertex sources only, no paths, no --limit\n"
+                "  or --stop-at-targets; meshes with degenerate (zero-area) faces are refused"),
+    real_option("limit", "D", "", 0, 1e300, "stop the propagation at geodesic distance D (farther vertices: unreachable)"),
+    flag_option("stop-at-targets", "stop as soon as the target distances are final (other vertices may stay unreachable)"),
+    flag_option("shorten-paths", "make each path locally shortest (straight in every unfolding, bending only at saddle\n"
+                "and border vertices; set_path_shortening): for the approximate methods"),
+    text_option("memory", "MODE", "full", "full: the whole distance field, needed for paths | distances: vertex distances\n"
+                "only, less memory, no paths", {"full", "distances"}),
+    list_option("view", "X,Y,Z", "1,1,1", 3, 3, -HUGE_VAL, HUGE_VAL, "direction from the mesh towards the viewer (orthographic)"),
+    list_option("up", "X,Y,Z", "0,1,0", 3, 3, -HUGE_VAL, HUGE_VAL, "direction drawn upwards"),
+    integer_option("levels", "N", "20", 0, 1000, "about N iso-distance lines at round values (picture and isolines.csv; 0: none)"),
+    flag_option("compare-exact", "also run the exact method (same sources and limits); report its time and the error of\n"
+                "--method: mean relative error (thesis eq. 4.4.1), max relative and absolute error"),
+    flag_option("compare-cgal", "also run CGAL::Surface_mesh_shortest_path; report the largest difference and both times"),
+    flag_option("repair", "run CGAL's soup repair on a file that is not a valid mesh instead of refusing it; it\n"
+                "changes the surface (merges, reorients, cuts non-manifold parts open): said on stderr,\n"
+                "in summary.txt and summary.json, and indices then refer to the repaired mesh"),
+  };
+  add_common_options(s, Common_options{"mdcs-output", true, true});
+  s.notes =
+    "Files in the output folder: distances.ply (ASCII: per vertex x y z and the distance, doubles with 17 significant\n"
+    "digits, -1 for unreachable vertices, and the colour of the picture's map), paths.json (per target: distance,\n"
+    "length, points, and the path as mesh locations: vertices, edge crossings, face points), paths.csv (the points),\n"
+    "isolines.csv (iso-distance polylines: level, line, position, x, y, z), geodesics.svg/.png (not with\n"
+    "--no-picture), summary.txt, summary.json.\n"
+    "Exit codes: 2 for a malformed or out-of-range --source/--targets, an unknown --method or a surface-point source\n"
+    "with the heat method; 3 for a mesh file that is malformed (the message names the line or element), is not a\n"
+    "valid oriented manifold mesh (without --repair), has no face, or that the heat method cannot handle; 1 when a\n"
+    "result fails its check (a distance that is not finite, a source not at 0).\n";
+  return s;
+}
+
+inline Geodesics_settings parse_geodesics_settings(const Parsed_options& o)
+{
+  Geodesics_settings s;
+  if(!o.given("source")) throw Usage_error("--source is required (vertex indices such as 0,17 or face points f:FACE:B0:B1:B2)");
+  s.sources = o.text("source");
+  s.targets = o.text("targets");
+  if(o.given("limit")) s.limit = o.real("limit");
+  s.stop_at_targets = o.flag("stop-at-targets");
+  s.full_field = o.text("memory") == "full";
+  auto vector3 = [&](const char* name) {
+    const std::vector<double> v = o.list(name);
+    const Geo_vec g = {{v[0], v[1], v[2]}};
+    const double n = geo_detail::dot(g, g);
+    if(!(n > 0) || !std::isfinite(n)) throw Usage_error(std::string("--") + name + " must be a non-zero vector (got '" + o.text(name) + "')");
+    return g;
+  };
+  s.view = vector3("view");
+  s.up = vector3("up");
+  s.levels = long(o.integer("levels"));
+  s.method = parse_geo_method(o.text("method"));
+  s.compare_exact = o.flag("compare-exact");
+  s.compare_cgal = o.flag("compare-cgal");
+  s.shorten_paths = o.flag("shorten-paths");
+  if(s.shorten_paths && (s.method.is_heat() || !s.full_field))
+    throw Usage_error("--shorten-paths needs paths: not with the heat method or --memory distances");
+  s.output = o.text("output");
+  s.picture = !o.flag("no-picture");
+  s.repair = o.flag("repair");
+  s.mesh = o.positional().front();
+  return s;
+}
+
+} // namespace mdcs_cli
+
+#endif // MDCS_CLI_GEODESICS_OPTIONS_H
