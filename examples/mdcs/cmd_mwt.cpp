@@ -28,13 +28,18 @@ Command_spec mwt_spec()
     text_option("metric", "M", "L2", "L2, L1 or Linf (L1/Linf: no pruning, small inputs only)", {"L2", "L1", "Linf"}),
     flag_option("no-pruning", "use every segment as a candidate edge (O(n^3) triangles)"),
     flag_option("lp-only", "do not resolve a fractional LP optimum by branch and bound"),
+    real_option("time-limit", "S", "", 0, 1e7, "seconds (wall clock) for the LP solve and, separately, for the branch and bound\n"
+                "of a fractional optimum (0: none; not given: no limit on the LP, 300 s on branch and\n"
+                "bound); at the LP's limit: status time_limit_reached, no triangulation, exit code 1"),
     flag_option("lmt", "LMT-skeleton + dynamic program on its faces, the LP only for the rest (L2 only)"),
   };
   add_common_options(s, Common_options{"mwt_output", true, true});
   s.notes =
     "Files in the output folder: mwt.off (the triangulation), mwt_edges.csv (i,j,length,xi,yi,xj,yj; 17 significant\n"
     "digits), mwt.svg/.png (not with --no-picture), report.txt, summary.json.\n"
-    "Exit code 1 also when the LP solver failed (the report says why).\n";
+    "Exit code 1 also when no triangulation was found: the LP solver failed (solver_failed), stopped at --time-limit\n"
+    "(time_limit_reached), or branch and bound ran out of time on a fractional optimum (fractional_bound_only; with\n"
+    "--lp-only that status is the answer asked for, exit code 0). The report says why.\n";
   return s;
 }
 
@@ -55,6 +60,10 @@ int run_mwt_command(Invocation& run)
   if(o.flag("no-pruning")) opt.pruning = MWT::Pruning::none;
   opt.resolve_fractional = !o.flag("lp-only");
   opt.use_lmt_skeleton = o.flag("lmt");
+  if(o.given("time-limit")) {
+    opt.lp_time_limit = o.real("time-limit");
+    opt.branch_and_bound_time_limit = o.real("time-limit");
+  }
   const Progress_bar& bar = run.progress;
   opt.progress = [bar](const char* stage, double f) { return bar(stage, f); };
 
@@ -77,7 +86,10 @@ int run_mwt_command(Invocation& run)
     run.progress.end();
     std::cout << "wrote " << (folder / "mwt.off").string() << ", mwt_edges.csv" << (run.picture() ? ", mwt.svg" : "") << "\n";
   }
-  const int code = r.status == MWT::Mwt_status::solver_failed ? EXIT_FAILURE_RUNTIME : EXIT_OK;
+  // No triangulation although one was asked for: a runtime failure, never a success.
+  const bool failed = r.status == MWT::Mwt_status::solver_failed || r.status == MWT::Mwt_status::time_limit_reached ||
+                      (r.status == MWT::Mwt_status::fractional_bound_only && opt.resolve_fractional);
+  const int code = failed ? EXIT_FAILURE_RUNTIME : EXIT_OK;
   const auto& st = r.statistics;
   json.inputs.add("points", o.given("random") ? "random " + o.text("distribution") + " " + std::to_string(o.integer("random"))
                             : o.given("wheel") ? "wheel " + std::to_string(o.integer("wheel")) : o.positional().front())
