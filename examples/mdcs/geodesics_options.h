@@ -156,8 +156,8 @@ inline Command_spec geodesics_command_spec()
     "With --matrix: distances.npy or distances.mtx, summary.txt, summary.json.\n"
     "Exit codes: 2 for a malformed or out-of-range --source/--targets, an unknown --method or a surface-point source\n"
     "with the heat method; 3 for a mesh file that is malformed (the message names the line or element), is not a\n"
-    "valid oriented manifold mesh (without --repair), has no face, or that the heat method cannot handle; 1 when a result fails its\n"
-    "check (a distance that is not finite, a source not at 0).\n";
+    "valid oriented manifold mesh (without --repair), has no face, or that the heat method cannot handle; 1 when a\n"
+    "result fails its check (a distance that is not finite, a source not at 0).\n";
   return s;
 }
 
