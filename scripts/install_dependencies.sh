@@ -16,6 +16,12 @@ packages=(
   doxygen libjs-mathjax                 # offline manual (formulas through the local MathJax)
   librsvg2-bin                          # rsvg-convert: PNG copies of the SVG pictures
   python3                               # the runner of the command-line cases (test/cli)
+  python3-dev pybind11-dev python3-pybind11   # the Python package mdcs (python/): headers and pybind11
+  python3-numpy python3-scipy           # its arrays and sparse matrices
+  python3-pytest                        # its test suite
+  python3-dask python3-distributed      # mdcs.dask (LocalCluster in the tests)
+  python3-venv python3-pip python3-setuptools python3-wheel   # pip install from the source tree, offline
+  python3-tqdm python3-zarr             # optional: progress bars, Zarr output of mdcs.dask
 )
 
 missing=()

@@ -99,7 +99,9 @@ TEST_CASE("convex_polygon_mwt_2: against brute force and the LP", "[mwt][convex]
     CHECK(w == Approx(brute_force_mwt(p)).epsilon(1e-12));
     CHECK(w == Approx(edge_weight(p, tri)).epsilon(1e-12));
     CHECK(independent_triangulation_check(p, tri));
-    const auto r = MWT::minimum_weight_triangulation_2(p);
+    MWT::Mwt_options lp_path;
+    lp_path.convex_position_by_dynamic_program = false;   // the LP, not the convex program again
+    const auto r = MWT::minimum_weight_triangulation_2(p, lp_path);
     CHECK(r.lp_integral);   // thesis lemma 3.6.1: convex position gives integral LP optima
     CHECK(r.weight == Approx(w).epsilon(1e-12));
   }
@@ -116,7 +118,9 @@ TEST_CASE("convex_polygon_mwt_2: larger convex polygons agree with the LP; bad p
   for(double t : a) p.emplace_back(3 * std::cos(t), std::sin(t));
   std::vector<std::array<int, 3>> tri;
   const double w = MWT::convex_polygon_mwt_2(p, std::back_inserter(tri));
-  const auto r = MWT::minimum_weight_triangulation_2(p);
+  MWT::Mwt_options lp_path;
+  lp_path.convex_position_by_dynamic_program = false;   // the LP, not the convex program again
+  const auto r = MWT::minimum_weight_triangulation_2(p, lp_path);
   CHECK(r.lp_integral);
   CHECK(r.weight == Approx(w).epsilon(1e-12));
   std::vector<Point> cw(p.rbegin(), p.rend());

@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -111,6 +112,7 @@ typedef Pseudoflow_max_flow Default_max_flow_engine;
   \throws std::domain_error when the finite capacities are too large to replace infinity safely
   \throws std::invalid_argument when the network exceeds the engine's limits (32-bit indices), or the
           engine breaks its contract (wrong number of sides)
+  \throws std::length_error when the engine runs out of memory (a huge node count: isolated nodes are allowed)
 
   \warning The flow is computed in floating point. The value is recomputed exactly as the sum of
   the chain's capacities, but two cuts whose values differ by rounding (about the machine epsilon
@@ -123,14 +125,23 @@ Min_cut_result<Capacity> solve_min_cut(const Flow_network<Capacity>& network, En
   typedef CGAL::MDCS::internal::Progress_reporter<Progress> Reporter;
   const std::size_t n = network.number_of_nodes();
 
-  Reporter network_stage(progress, "network", 1);
-  const Max_flow_problem<Capacity> problem(network);
-  network_stage.finish();
-
   Min_cut_result<Capacity> result;
-  Reporter max_flow_stage(progress, "max-flow", 1);
-  const Capacity flow = engine(problem, result.on_source_side);
-  max_flow_stage.finish();
+  Capacity flow = 0;
+  Reporter network_stage(progress, "network", 1);
+  try {
+    const Max_flow_problem<Capacity> problem(network);
+    network_stage.finish();
+    Reporter max_flow_stage(progress, "max-flow", 1);
+    flow = engine(problem, result.on_source_side);
+    max_flow_stage.finish();
+    flow = flow >= problem.infinite_capacity() ? Flow_network<Capacity>::infinity() : flow;
+  } catch(const std::bad_alloc&) {
+    // isolated nodes are allowed, so a node count alone is no error; running out of memory on it is reported
+    throw std::length_error("MDCS: solve_min_cut: out of memory for a network of " + std::to_string(n) + " nodes and " +
+                            std::to_string(network.number_of_facets() + network.number_of_source_facets() +
+                                           network.number_of_sink_facets()) +
+                            " facets (the engines need tens of bytes per node and per arc)");
+  }
   if(result.on_source_side.size() != n)
     throw std::invalid_argument("MDCS: solve_min_cut: the max-flow engine returned " +
                                 std::to_string(result.on_source_side.size()) + " node sides for " +
@@ -158,7 +169,7 @@ Min_cut_result<Capacity> solve_min_cut(const Flow_network<Capacity>& network, En
 
   // The two tests agree for an exact minimum cut; either alone suffices to show that the
   // constraints conflict, so rounding cannot turn an infeasible problem into a finite value.
-  result.is_finite = !crosses_infinite_arc && !(flow >= problem.infinite_capacity());
+  result.is_finite = !crosses_infinite_arc && flow != inf;
   result.value = result.is_finite ? value : inf;
   return result;
 }

@@ -14,7 +14,9 @@
 #include <CGAL/Min_cut/internal/planar_dual_shortest_path.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -64,7 +66,9 @@ struct Planar_min_cut
           `"shortest-path"` and `"sides"`. Returning `false` cancels.
 
   \throws std::invalid_argument when `dual` does not match `network` (sizes, indices, no start or end
-          vertex), or when the path found does not separate the source from the sink in `network`
+          vertex, more dual vertices than twice the dual edges plus the start and end vertices), or when the path
+          found does not separate the source from the sink in `network`
+  \throws std::domain_error when the sum of the finite capacities overflows `Capacity`
   \throws CGAL::MDCS::Operation_cancelled when `progress` returns false
 */
 template <class Capacity, class Progress = CGAL::MDCS::No_progress>
@@ -72,6 +76,21 @@ Min_cut_result<Capacity> solve_planar_min_cut(const Flow_network<Capacity>& netw
                                               Progress progress = Progress())
 {
   typedef CGAL::MDCS::internal::Progress_reporter<Progress> Reporter;
+  // The same bound as the max-flow engines' (Max_flow_problem): path lengths are sums of finite capacities, and
+  // their sum must be finite for a finite cut value to mean anything (1e308 + 1e308 made a "finite" cut of +inf).
+  {
+    const Capacity inf = Flow_network<Capacity>::infinity();
+    Capacity finite_sum = 0;
+    auto add = [&](Capacity c) {
+      if(c != inf) finite_sum += c;
+    };
+    for(const auto& f : network.facets()) { add(f.c_uv); add(f.c_vu); }
+    for(const auto& f : network.source_facets()) add(f.capacity);
+    for(const auto& f : network.sink_facets()) add(f.capacity);
+    if(!(std::abs(double(finite_sum)) <= double((std::numeric_limits<Capacity>::max)())))
+      throw std::domain_error("MDCS: solve_planar_min_cut: the finite capacities are too large (their sum overflows "
+                              "the capacity type); scale them down");
+  }
   internal::Planar_dual_shortest_path<Capacity> search(network, dual);
   {
     Reporter report(progress, "dual-graph", network.number_of_facets());

@@ -9,7 +9,9 @@
 
 #include <CGAL/Minimum_weight_triangulation_2/Linear_program.h>
 #include <CGAL/Minimum_weight_triangulation_2/Mwt_result.h>
+#include <CGAL/Minimum_weight_triangulation_2/convex_polygon_mwt_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Candidate_edges_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Coordinate_range_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Empty_triangles_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Face_dp_2.h>
@@ -25,6 +27,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -50,7 +53,8 @@ public:
   typedef typename Kernel::Point_2 Point_2;
   typedef std::pair<int, int> Edge;
 
-  /// \pre at least 3 distinct points with finite coordinates, not all collinear (else std::invalid_argument).
+  /// \pre at least 3 distinct points with finite coordinates, not all collinear, within `Mwt_coordinate_range`
+  /// (else std::invalid_argument).
   Minimum_weight_triangulation_lp_2(const std::vector<Point_2>& points, const Mwt_options& options = Mwt_options())
     : input_(points), pts_(input_), options_(options)
   {
@@ -73,6 +77,7 @@ private:
     const auto t0 = Stage_clock::now();
     if(!options_.progress) options_.progress = [](const char*, double) { return true; };
     hull_ = internal::checked_hull_boundary(pts_);
+    internal::check_coordinate_range(pts_);
     grid_.reset(new internal::Point_grid_2(pts_, 2.0));
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
     for(std::size_t i = 0; i < pts_.size(); ++i) {
@@ -94,8 +99,67 @@ public:
   /// Vertices (counter-clockwise) of the triangle of LP column `j`.
   std::array<int, 3> column_triangle(std::size_t j) const { return triangles_[j].v; }
   const Mwt_statistics& statistics() const { return stats_; }
-  /// Costs are divided by this length (the bounding box diagonal) in the LP.
+  /// LP costs are the weights divided by this: the bounding box diagonal for the metrics, the largest triangle
+  /// weight for a user weight (after build_linear_program(); LP costs then lie in (0, 1] whatever the weights' scale).
   double scale() const { return scale_; }
+
+  /// Whether every point is a corner of the convex hull (strictly convex position: no three hull points collinear).
+  bool in_strictly_convex_position() const
+  {
+    const std::size_t h = hull_.size();
+    if(h != pts_.size()) return false;
+    for(std::size_t i = 0; i < h; ++i)
+      if(pts_.orientation(hull_[i], hull_[(i + 1) % h], hull_[(i + 2) % h]) <= 0) return false;
+    return true;
+  }
+
+  /*!
+    Points in strictly convex position (`in_strictly_convex_position()`): the MWT by the exact dynamic program of
+    convex polygons (`convex_polygon_mwt_2()`) on the hull, without candidate edges, triangles or LP; validated
+    exactly, status `certified_optimal` (every decision of the program is exact for the double coordinates).
+    Metrics only (no user triangle weight). Progress stage "convex dynamic program".
+    \throws std::invalid_argument when the points are not in strictly convex position, with a user triangle weight,
+    or with more than `convex_polygon_mwt_max_vertices()` points.
+  */
+  Mwt_result solve_in_convex_position()
+  {
+    if(options_.triangle_weight)
+      throw std::invalid_argument("minimum_weight_triangulation_2: the convex-position program sums edge lengths (no user triangle weight)");
+    if(!in_strictly_convex_position())
+      throw std::invalid_argument("minimum_weight_triangulation_2: the points are not in strictly convex position");
+    const auto t0 = Stage_clock::now();
+    std::vector<Point_2> polygon;
+    polygon.reserve(hull_.size());
+    for(int v : hull_) polygon.push_back(pts_.point(v));
+    std::vector<std::array<int, 3>> tri;
+    tri.reserve(hull_.size());
+    std::size_t exact = 0;
+    convex_polygon_mwt_2(polygon, std::back_inserter(tri), options_.metric, &exact, options_.progress);
+    for(auto& t : tri)
+      for(int& v : t) v = hull_[std::size_t(v)];
+    Mwt_result r;
+    r.solver = "convex dynamic program";
+    stats_.dp_triangles = tri.size();
+    stats_.dp_exact_decisions = exact;
+    stats_.dp_exact_faces = exact > 0 ? 1 : 0;
+    stats_.time_face_dp = since(t0);
+    const auto t1 = Stage_clock::now();
+    const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, tri) : std::string();
+    if(!err.empty()) {
+      r.status = Mwt_status::solver_failed;
+      r.message = "the convex program's triangles are not a triangulation (internal error): " + err;
+      return finish(r);
+    }
+    r.triangles = std::move(tri);
+    r.weight = checked_weight(weight_of(r.triangles, &upper_weight_));
+    r.lower_bound = weight_lower_bound(r.triangles);
+    r.lp_objective = r.weight;
+    r.lp_integral = true;
+    r.status = Mwt_status::certified_optimal;
+    r.message = "strictly convex position: solved by the exact dynamic program of convex polygons (no LP needed)";
+    stats_.time_certificate = since(t1);
+    return finish(r);
+  }
 
   bool uses_diamond_test() const
   {
@@ -179,6 +243,12 @@ public:
         throw std::runtime_error("minimum_weight_triangulation_2: a hull edge has no empty triangle (internal error)");
     edge_length_.resize(edges_.size());
     for(std::size_t e = 0; e < edges_.size(); ++e) edge_length_[e] = length(edges_[e].first, edges_[e].second);
+    if(options_.triangle_weight) {
+      // user weights of any magnitude: the LP sees them divided by the largest (CLP aborts on costs of 1e25)
+      double largest = 0;
+      for(const auto& t : triangles_) largest = (std::max)(largest, triangle_cost(t));
+      if(largest > 0) scale_ = largest;
+    }
     for(const auto& t : triangles_) {
       int rows[3];
       double val[3];
@@ -215,14 +285,23 @@ public:
     const Linear_program_solution sol = solver.solve(lp_);
     stats_.time_lp_solve = since(t0);
     stats_.lp_iterations = sol.iterations;
+    if(sol.status == Lp_status::cancelled || sol.message.compare(0, 9, "cancelled") == 0)
+      throw CGAL::MDCS::Operation_cancelled("LP solve");
     if(!options_.progress("LP solve", 1)) throw CGAL::MDCS::Operation_cancelled("LP solve");
-    if(sol.status != Lp_status::optimal || sol.primal.size() != lp_.number_of_columns()) {
+    if(sol.status == Lp_status::time_limit) {
+      r.status = Mwt_status::time_limit_reached;
+      r.message = "the LP solver stopped at the time limit after " + seconds(stats_.time_lp_solve) + " (" + sol.message + ")";
+      return finish(r);
+    }
+    // Nothing of the solver's answer is used before it is checked: NaN or infinite objective and values included.
+    std::string unusable;
+    if(!is_usable_optimum(lp_, sol, &unusable)) {
       r.status = Mwt_status::solver_failed;
-      r.message = std::string("LP solver: ") + to_string(sol.status) + " (" + sol.message + ")";
+      r.message = std::string("LP solver: ") + unusable + " (" + sol.message + ")";
       return finish(r);
     }
     const double fixed_part = fixed_weight_lower_bound();   // faces solved by the dynamic program
-    r.lp_objective = sol.objective * scale_ + fixed_part;
+    r.lp_objective = checked_weight(sol.objective * scale_ + fixed_part);   // finite objective, overflow by the scale
     r.lp_exact = sol.exact;
     t0 = Stage_clock::now();
     r.lower_bound = dual_lower_bound(sol.dual) + fixed_part;
@@ -242,7 +321,7 @@ public:
         r.message = "the integral LP solution is not a triangulation: " + err;
       } else {
         r.triangles = chosen;
-        r.weight = weight_of(chosen, &upper_weight_);
+        r.weight = checked_weight(weight_of(chosen, &upper_weight_));
         const bool ok = r.lower_bound >= upper_weight_ - options_.certificate_tolerance * std::abs(upper_weight_);
         r.certificate_exact = fixed_.empty() && reduced_costs_separate(sol.dual, sol.primal);
         if(!r.certificate_exact && fixed_.empty() && options_.exact_support_certificate) {
@@ -269,12 +348,19 @@ public:
     t0 = Stage_clock::now();
     const Linear_program_solution mip = binary_solver(lp_);
     stats_.time_branch_and_bound = since(t0);
-    // a binary solver stopped by the progress callback says so at the start of its message
-    if(mip.message.compare(0, 9, "cancelled") == 0) throw CGAL::MDCS::Operation_cancelled("branch and bound");
+    // a binary solver stopped by the progress callback says so in its status or at the start of its message
+    if(mip.status == Lp_status::cancelled || mip.message.compare(0, 9, "cancelled") == 0)
+      throw CGAL::MDCS::Operation_cancelled("branch and bound");
     if(!options_.progress("branch and bound", 1)) throw CGAL::MDCS::Operation_cancelled("branch and bound");
-    if(mip.status != Lp_status::optimal || mip.primal.size() != lp_.number_of_columns()) {
+    if(mip.status == Lp_status::time_limit) {
       r.status = Mwt_status::fractional_bound_only;
-      r.message += "; branch and bound did not finish: " + mip.message;
+      r.message += "; branch and bound stopped at its time limit after " + seconds(stats_.time_branch_and_bound) +
+                   " (" + mip.message + ")";
+      return finish(r);
+    }
+    if(!is_usable_optimum(lp_, mip, &unusable)) {
+      r.status = Mwt_status::fractional_bound_only;
+      r.message += "; branch and bound did not finish: " + unusable + " (" + mip.message + ")";
       return finish(r);
     }
     chosen = fixed_;
@@ -287,7 +373,7 @@ public:
       return finish(r);
     }
     r.triangles = chosen;
-    r.weight = weight_of(chosen, &upper_weight_);
+    r.weight = checked_weight(weight_of(chosen, &upper_weight_));
     r.status = Mwt_status::optimal_after_branch_and_bound;
     r.message += "; resolved by branch and bound";
     return finish(r);
@@ -354,6 +440,38 @@ private:
     }
     Interval value() const { return total + block; }
   };
+
+  static std::string seconds(double t)
+  {
+    std::ostringstream o;
+    o.precision(3);
+    o << t << " s";
+    return o.str();
+  }
+
+  // A weight is only reported when finite: the coordinate range keeps the metrics' sums finite; user triangle
+  // weights (each finite) may still add up to infinity.
+  static double checked_weight(double w)
+  {
+    if(!std::isfinite(w))
+      throw std::invalid_argument("minimum_weight_triangulation_2: the weight of the triangulation is not finite (the "
+                                  "triangle weights add up beyond the double range); scale the weights down");
+    return w;
+  }
+
+  // Rigorous lower bound of the weight of a triangulation (interval sum of its edge lengths).
+  double weight_lower_bound(const std::vector<std::array<int, 3>>& tri) const
+  {
+    std::vector<std::pair<int, int>> e;
+    e.reserve(3 * tri.size());
+    for(const auto& t : tri)
+      for(int i = 0; i < 3; ++i) e.emplace_back(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
+    std::sort(e.begin(), e.end());
+    e.erase(std::unique(e.begin(), e.end()), e.end());
+    Blocked_interval_sum I;
+    for(const auto& ed : e) I.add(interval_length(ed.first, ed.second));
+    return I.value().inf();
+  }
 
   Mwt_result finish(Mwt_result& r)
   {
@@ -435,7 +553,7 @@ private:
       return finish(r);
     }
     r.triangles = fixed_;
-    r.weight = weight_of(fixed_, &upper_weight_);
+    r.weight = checked_weight(weight_of(fixed_, &upper_weight_));
     r.lower_bound = fixed_weight_lower_bound();
     r.lp_objective = r.weight;
     r.lp_integral = true;

@@ -7,6 +7,7 @@
 #define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MWT_RESULT_H
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -48,9 +49,15 @@ enum class Lp_solver_choice { automatic, clp, glpk, exact };
     certified (solver duals too inaccurate).
   - `fractional_bound_only`: the LP optimum is fractional and was not resolved; no triangulation,
     `lower_bound` holds.
-  - `solver_failed`: the LP/MIP solver failed; `message` says how.
+  - `solver_failed`: the LP/MIP solver failed, or returned something unusable (a non-finite objective or value, a
+    point that is no triangulation); `message` says how. No triangulation.
+  - `time_limit_reached`: the LP solver stopped at `Mwt_options::lp_time_limit`; no triangulation, no bound.
+    (Branch and bound stopped by its own limit gives `fractional_bound_only`, which keeps the LP bound.)
+
+  A result with a triangulation always has a finite weight and a finite LP objective.
 */
-enum class Mwt_status { certified_optimal, optimal_after_branch_and_bound, optimal_uncertified, fractional_bound_only, solver_failed };
+enum class Mwt_status { certified_optimal, optimal_after_branch_and_bound, optimal_uncertified, fractional_bound_only, solver_failed,
+                        time_limit_reached };
 
 inline const char* to_string(Mwt_status s)
 {
@@ -59,9 +66,28 @@ inline const char* to_string(Mwt_status s)
     case Mwt_status::optimal_after_branch_and_bound: return "optimal_after_branch_and_bound";
     case Mwt_status::optimal_uncertified: return "optimal_uncertified";
     case Mwt_status::fractional_bound_only: return "fractional_bound_only";
+    case Mwt_status::time_limit_reached: return "time_limit_reached";
     default: return "solver_failed";
   }
 }
+
+/*!
+  \brief The valid coordinate range of `minimum_weight_triangulation_2()` (checked up front; `std::invalid_argument`
+  otherwise): every coordinate within [-2^500, 2^500] (about 3.3e150), and a bounding box whose larger side is at
+  least 2^-400 (about 3.9e-121).
+
+  Why: edge lengths are computed as sqrt(dx^2 + dy^2) in double precision (the weights, the LP costs, the interval
+  certificate, the error bounds of the dynamic programs). Above 2^500 a squared coordinate difference can overflow
+  (1e300 gave an infinite weight, a NaN LP optimum in GLPK and assertion failures inside CLP and GLPK); below
+  2^-400 the squares approach the subnormal range, where lengths lose their relative precision (1e-160 gave a
+  heavier, uncertified triangulation and 1e-200 a weight of 0). Scaling the points by a power of two keeps every
+  coordinate and every orientation exact and scales the weight by the same factor.
+*/
+struct Mwt_coordinate_range
+{
+  static double max_abs_coordinate() { return std::ldexp(1.0, 500); }
+  static double min_extent() { return std::ldexp(1.0, -400); }
+};
 
 /// Parameters of minimum_weight_triangulation_2().
 struct Mwt_options
@@ -76,6 +102,16 @@ struct Mwt_options
   /// Seconds for the branch and bound of a fractional LP optimum (0: none). When it runs out, the status is
   /// `fractional_bound_only` with the LP bound. The progress callback can also stop it (stage "branch and bound").
   double branch_and_bound_time_limit = 300;
+  /// Seconds (wall clock) for the LP solve of the built-in solver models (0: none, the default: the LP of 10^4
+  /// uniform points takes about half a minute in CLP). When it runs out, the status is `time_limit_reached`. The
+  /// solver asks the progress callback about once a second (stage "LP solve", fraction = elapsed part of the
+  /// limit, 0 without one); returning false stops it and the run throws `CGAL::MDCS::Operation_cancelled`.
+  double lp_time_limit = 0;
+  /// `minimum_weight_triangulation_2()`: points in strictly convex position (every point a corner of the convex
+  /// hull) are triangulated by the exact dynamic program of convex polygons (`convex_polygon_mwt_2()`, O(n^3)
+  /// time, 12 n^2 bytes), without candidate edges, triangles or LP (whose n^3 / 6 columns made 64 cocircular
+  /// points take minutes in GLPK). Off: the LP path as for any other set (tests compare the two).
+  bool convex_position_by_dynamic_program = true;
   double certificate_tolerance = 1e-9;             ///< relative gap accepted by the certificate
   double integrality_tolerance = 1e-6;
   bool validate = true;                            ///< exact validation of the output triangulation

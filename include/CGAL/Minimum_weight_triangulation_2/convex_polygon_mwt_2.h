@@ -10,7 +10,9 @@
 #define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_CONVEX_POLYGON_MWT_2_H
 
 #include <CGAL/Minimum_weight_triangulation_2/Mwt_result.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Coordinate_range_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
+#include <CGAL/MDCS/progress.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
 
@@ -24,6 +26,10 @@
 namespace CGAL {
 namespace Minimum_weight_triangulation_2 {
 
+/// The largest polygon `convex_polygon_mwt_2()` accepts: its tables take 12 k^2 bytes (3 GiB at this size) and
+/// O(k^3) time (hours at this size; the progress callback reports and can cancel).
+inline std::size_t convex_polygon_mwt_max_vertices() { return 16384; }
+
 /*!
   \brief Minimum weight triangulation of a strictly convex polygon given by its vertices in
   counter-clockwise order, by dynamic programming in O(k^3) time and O(k^2) memory.
@@ -33,18 +39,37 @@ namespace Minimum_weight_triangulation_2 {
   coordinates of the vertices (a minimum of exact sums of lengths, ties broken by the smallest apex index):
   sums are compared in double where a forward error bound decides, exactly otherwise; `exact_decisions`, if
   given, receives the number of exact comparisons made.
-  \throws std::invalid_argument when fewer than 3 vertices are given or the polygon is not strictly
-  convex and counter-clockwise (checked with the kernel's exact orientation).
+  `progress` (a callable `bool(const char* stage, double fraction)`, see CGAL/MDCS/progress.h) sees the stage
+  "convex dynamic program" about a hundred times, with the fraction of the work done.
+  \throws std::invalid_argument when fewer than 3 or more than `convex_polygon_mwt_max_vertices()` vertices are
+  given, a coordinate is outside `Mwt_coordinate_range`, or the polygon is not strictly convex and
+  counter-clockwise (checked with the kernel's exact orientation).
+  \throws CGAL::MDCS::Operation_cancelled when `progress` returns false.
 */
-template <class PointRange, class OutputIterator>
+template <class PointRange, class OutputIterator, class Progress = CGAL::MDCS::No_progress>
 double convex_polygon_mwt_2(const PointRange& polygon, OutputIterator out, Edge_metric metric = Edge_metric::L2,
-                            std::size_t* exact_decisions = nullptr)
+                            std::size_t* exact_decisions = nullptr, Progress progress = Progress())
 {
   typedef typename std::iterator_traits<decltype(std::begin(polygon))>::value_type Point_2;
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
+  const std::size_t size = std::size_t(std::distance(std::begin(polygon), std::end(polygon)));
+  if(size < 3) throw std::invalid_argument("convex_polygon_mwt_2: needs at least 3 vertices");
+  if(size > convex_polygon_mwt_max_vertices())
+    throw std::invalid_argument("convex_polygon_mwt_2: " + std::to_string(size) + " vertices; at most " +
+                                std::to_string(convex_polygon_mwt_max_vertices()) + " (the tables take 12 k^2 bytes)");
   const std::vector<Point_2> p(std::begin(polygon), std::end(polygon));
   const int k = int(p.size());
-  if(k < 3) throw std::invalid_argument("convex_polygon_mwt_2: needs at least 3 vertices");
+  {
+    // the coordinates as the program reads them: squared differences must stay finite and normal
+    struct Doubles
+    {
+      const std::vector<Point_2>& p;
+      std::size_t size() const { return p.size(); }
+      double x(int i) const { return CGAL::to_double(p[std::size_t(i)].x()); }
+      double y(int i) const { return CGAL::to_double(p[std::size_t(i)].y()); }
+    } doubles{p};
+    internal::check_coordinate_range(doubles, "convex_polygon_mwt_2");
+  }
   typename K::Orientation_2 orient = K().orientation_2_object();
   for(int i = 0; i < k; ++i) {
     if(orient(p[i], p[(i + 1) % k], p[(i + 2) % k]) != CGAL::LEFT_TURN)
@@ -80,7 +105,13 @@ double convex_polygon_mwt_2(const PointRange& polygon, OutputIterator out, Edge_
       if(j > c + 1) { o.push_back({{x[c], y[c], x[j], y[j]}}); stack.push_back({c, j, best[c * k + j]}); }
     }
   };
-  for(int gap = 2; gap < k; ++gap)
+  // work of gap g: (k - g) sub-polygons of g - 1 apexes each; reported by the share of sum over g of (k - g)(g - 1)
+  const double total_work = std::max(1.0, double(k) * double(k - 1) * double(k - 2) / 6.0);
+  double work = 0;
+  CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "convex dynamic program", 1000);
+  for(int gap = 2; gap < k; ++gap) {
+    work += double(k - gap) * double(gap - 1);
+    report(std::size_t(1000.0 * std::min(1.0, work / total_work)));
     for(int i = 0; i + gap < k; ++i) {
       const int j = i + gap;
       double m = std::numeric_limits<double>::infinity(), second = m;
@@ -108,6 +139,8 @@ double convex_polygon_mwt_2(const PointRange& polygon, OutputIterator out, Edge_
       }
       D[i * k + j] = m;
     }
+  }
+  report.finish();
   if(exact_decisions) *exact_decisions = exact;
   std::vector<std::array<int, 2>> stack{{0, k - 1}};
   while(!stack.empty()) {

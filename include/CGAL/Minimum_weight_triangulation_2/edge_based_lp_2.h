@@ -11,6 +11,7 @@
 
 #include <CGAL/Minimum_weight_triangulation_2/Linear_program.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Candidate_edges_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Coordinate_range_2.h>
 #include <CGAL/Kernel_traits.h>
 
 #include <cmath>
@@ -30,7 +31,7 @@ struct Edge_based_lp
 
 /*!
   \brief Builds the edge-based LP (costs are Euclidean lengths, unscaled).
-  \throws std::invalid_argument on the same bad input as `minimum_weight_triangulation_2()`.
+  \throws std::invalid_argument on the same bad input as `minimum_weight_triangulation_2()` (coordinate range included).
 */
 template <class PointRange>
 Edge_based_lp make_edge_based_lp_2(const PointRange& points)
@@ -40,6 +41,7 @@ Edge_based_lp make_edge_based_lp_2(const PointRange& points)
   const std::vector<Point_2> p(std::begin(points), std::end(points));
   internal::Indexed_points_2<K> pts(p);
   internal::checked_hull_boundary(pts);
+  internal::check_coordinate_range(pts, "make_edge_based_lp_2");
   internal::Point_grid_2 grid(pts);
   CGAL::MDCS::No_progress none;
   Edge_based_lp out;

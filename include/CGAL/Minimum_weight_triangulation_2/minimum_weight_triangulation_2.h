@@ -7,6 +7,7 @@
 #define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MINIMUM_WEIGHT_TRIANGULATION_2_H
 
 #include <CGAL/Minimum_weight_triangulation_2/Minimum_weight_triangulation_lp_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Coordinate_range_2.h>
 #include <CGAL/Kernel_traits.h>
 #if defined(MDCS_HAS_CLP)
 #include <CGAL/Minimum_weight_triangulation_2/CLP_linear_program_solver.h>
@@ -52,7 +53,11 @@ inline bool has_lp_solver(Lp_solver_choice c)
   \tparam PointRange a range of `Point_2` of a CGAL kernel.
   \tparam LpSolver a model of `LinearProgramSolver`.
   `binary_solver` (may be empty) solves the 0/1 version of an LP; it resolves fractional LP optima.
-  \throws std::invalid_argument on bad input (fewer than 3 points, duplicates, non-finite, all collinear).
+  Points in strictly convex position are triangulated by the exact convex-polygon program instead
+  (`Mwt_options::convex_position_by_dynamic_program`); neither solver is called then.
+  \throws std::invalid_argument on bad input (fewer than 3 points, duplicates, non-finite, all collinear,
+  coordinates outside `Mwt_coordinate_range`).
+  \throws CGAL::MDCS::Operation_cancelled when the progress callback returns false.
 */
 template <class PointRange, class LpSolver>
 Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_options& options, const LpSolver& solver,
@@ -78,6 +83,8 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
       internal::checked_hull_boundary(ip);   // throws with the input indices
       throw;
     }
+    // the coordinate range, reported with the input indices
+    internal::check_coordinate_range(internal::Indexed_points_2<Kernel>(input));
     p.resize(input.size());
     for(std::size_t i = 0; i < order.size(); ++i) p[i] = input[std::size_t(order[i])];
   }   // the copy in input order is released: the stages hold the points once (moved below)
@@ -89,10 +96,15 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   Mwt_result r;
   try {
     Minimum_weight_triangulation_lp_2<Kernel> mwt(std::move(p), options);   // no second copy of the points
-    mwt.compute_candidate_edges();
-    mwt.compute_empty_triangles();
-    mwt.build_linear_program();
-    r = mwt.solve(solver, binary_solver);
+    if(options.convex_position_by_dynamic_program && !options.triangle_weight && mwt.in_strictly_convex_position() &&
+       mwt.hull().size() <= convex_polygon_mwt_max_vertices()) {
+      r = mwt.solve_in_convex_position();
+    } else {
+      mwt.compute_candidate_edges();
+      mwt.compute_empty_triangles();
+      mwt.build_linear_program();
+      r = mwt.solve(solver, binary_solver);
+    }
   } catch(const std::invalid_argument&) {
     const std::vector<Point_2> input(std::begin(points), std::end(points));
     internal::Indexed_points_2<Kernel> ip(input);
@@ -111,13 +123,26 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   (automatic: CLP's dual simplex when available, else GLPK). Fractional LP optima are resolved by GLPK's
   branch and cut when `options.resolve_fractional` and GLPK is available.
 
+  The LP solve is bounded by `options.lp_time_limit` (status `time_limit_reached`), branch and bound by
+  `options.branch_and_bound_time_limit` (status `fractional_bound_only`); both ask `options.progress` about once
+  a second (stages "LP solve" and "branch and bound"), which can cancel them.
+
   \returns a `Mwt_result`: the triangles (index triples, counter-clockwise), the weight, the status and a
   rigorous lower bound.
-  \throws std::invalid_argument on bad input, std::runtime_error when the requested solver is not built in.
+  \throws std::invalid_argument on bad input, std::runtime_error when the requested solver is not built in,
+  CGAL::MDCS::Operation_cancelled when the progress callback returns false.
 */
 template <class PointRange>
 Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_options& options = Mwt_options())
 {
+  if(!(options.lp_time_limit >= 0) || !(options.branch_and_bound_time_limit >= 0))
+    throw std::invalid_argument("minimum_weight_triangulation_2: the time limits must be >= 0 seconds (0: none), not NaN");
+  Lp_solve_control control;
+  control.time_limit = options.lp_time_limit;
+  if(options.progress) {
+    const auto progress = options.progress;
+    control.keep_going = [progress](double f) { return progress("LP solve", f); };
+  }
   std::function<Linear_program_solution(const Sparse_linear_program&)> bb;
 #if defined(MDCS_HAS_GLPK)
   const double limit = options.branch_and_bound_time_limit;
@@ -138,15 +163,24 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   }
   switch(c) {
 #if defined(MDCS_HAS_CLP)
-    case Lp_solver_choice::clp: return minimum_weight_triangulation_2(points, options, CLP_linear_program_solver(), bb);
+    case Lp_solver_choice::clp: {
+      CLP_linear_program_solver clp;
+      clp.set_control(control);
+      return minimum_weight_triangulation_2(points, options, clp, bb);
+    }
 #endif
 #if defined(MDCS_HAS_GLPK)
-    case Lp_solver_choice::glpk: return minimum_weight_triangulation_2(points, options, GLPK_linear_program_solver(), bb);
-    case Lp_solver_choice::exact: return minimum_weight_triangulation_2(points, options, GLPK_linear_program_solver(true), bb);
+    case Lp_solver_choice::glpk:
+    case Lp_solver_choice::exact: {
+      GLPK_linear_program_solver glpk(c == Lp_solver_choice::exact);
+      glpk.set_control(control);
+      return minimum_weight_triangulation_2(points, options, glpk, bb);
+    }
 #endif
     default: break;
   }
   (void)bb;
+  (void)control;
   throw std::runtime_error("minimum_weight_triangulation_2: the requested LP solver was not built in (needs CLP or GLPK)");
 }
 

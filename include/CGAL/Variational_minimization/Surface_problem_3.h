@@ -90,6 +90,9 @@ struct Surface_problem_3
     if(!(domain.xmin() < domain.xmax()) || !(domain.ymin() < domain.ymax()))
       fail("the domain rectangle is empty (need xmin < xmax and ymin < ymax)");
     if(!(zmin < zmax)) fail("the range of values is empty (need zmin < zmax)");
+    if(!std::isfinite(domain.xmax() - domain.xmin()) || !std::isfinite(domain.ymax() - domain.ymin()) ||
+       !std::isfinite(zmax - zmin))
+      fail("the domain's width and height and the range zmax - zmin must be finite (they overflow)");
     if(!lower_boundary) fail("no boundary function is given (lower_boundary is empty)");
     if(boundary_segments_per_side < 1 || boundary_segments_per_side > 256)
       fail("boundary_segments_per_side must be in [1, 256]");

@@ -93,6 +93,10 @@ inline bool meets_open_box(const CGAL::Bbox_2& box, const Point_2& p, const Poin
 
 } // namespace internal
 
+/// \ingroup PkgVariationalMinimizationGrid
+/// The most lines `random_lines_2()` draws: 2^16 (the list of lines it sizes would otherwise be as large as asked).
+inline std::size_t max_random_lines_2() { return std::size_t(1) << 16; }
+
 /*!
   \ingroup PkgVariationalMinimizationGrid
   `n` random lines for `Line_arrangement_2`: each through a uniform random point of the box with a
@@ -104,13 +108,20 @@ inline bool meets_open_box(const CGAL::Bbox_2& box, const Point_2& p, const Poin
 
   The result depends only on `seed` (std::mt19937_64 with our own mapping to [0, 1)).
 
-  \throws std::invalid_argument on a bad box, a pencil fraction outside [0, 1], a negative or non-finite
-  `max_abs_slope`, or a pencil point outside the closed box.
+  At most `max_random_lines_2()` lines: the arrangement of n random lines has about n^2 / 2 crossings, and
+  `Line_arrangement_2` holds at most 2^28 edges, which runs out far below that count.
+
+  \throws std::invalid_argument on a bad box, `n > max_random_lines_2()`, a pencil fraction outside [0, 1], a
+  negative or non-finite `max_abs_slope`, or a pencil point outside the closed box.
 */
 inline std::vector<Arrangement_line_2> random_lines_2(const CGAL::Bbox_2& box, std::size_t n, std::uint64_t seed,
                                                       const Random_lines_options& options = Random_lines_options())
 {
   internal::check_generator_box(box, "random_lines_2");
+  if(n > max_random_lines_2())
+    throw std::invalid_argument("MDCS: random_lines_2: " + std::to_string(n) + " lines requested; at most " +
+                                std::to_string(max_random_lines_2()) + " (their arrangement would exceed the 2^28 "
+                                "edges of Line_arrangement_2: about n^2 / 2 crossings)");
   if(!(options.pencil_fraction >= 0 && options.pencil_fraction <= 1))
     throw std::invalid_argument("MDCS: random_lines_2: pencil_fraction must lie in [0, 1]");
   if(!(options.max_abs_slope >= 0) || !std::isfinite(options.max_abs_slope))

@@ -16,6 +16,7 @@
 #include <CGAL/Variational_minimization/internal/curve_dual_network_2.h>
 #include <CGAL/Variational_minimization/internal/curve_from_edges_2.h>
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -65,6 +66,10 @@ inline Minimal_curve_2 curve_from_cut_2(const Line_arrangement_2& arrangement, c
     edges.push_back(facet.id);
   }
   order_curve_edges(arrangement, weights, edges, curve);
+  // finite weights (checked) may still add up beyond the double range: never report an infinite energy as feasible
+  if(!std::isfinite(curve.energy) || !std::isfinite(curve.solver_value))
+    throw std::invalid_argument("MDCS: the minimal curve's energy is not finite: the edge weights add up beyond the "
+                                "double range; scale the functional down");
   return curve;
 }
 
@@ -74,6 +79,10 @@ inline void check_curve_weights_2(const Line_arrangement_2& arrangement, const s
   problem.validate();
   if(weights.size() != arrangement.number_of_edges())
     throw std::invalid_argument("MDCS: minimize_curve_functional_2: one weight per arrangement edge is required");
+  for(std::size_t e = 0; e < weights.size(); ++e)
+    if(!(weights[e] >= 0))   // +infinity is allowed: an edge the curve must not use
+      throw std::invalid_argument("MDCS: minimize_curve_functional_2: the weight of edge " + std::to_string(e) +
+                                  " is negative or NaN (weights must be >= 0, +infinity allowed)");
 }
 
 } // namespace internal

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -85,6 +86,11 @@ void surface_mesh_from_facets(const Plane_arrangement_3& arrangement, const Surf
   s.planes.erase(std::unique(s.planes.begin(), s.planes.end()), s.planes.end());
   s.energy = energy;
   s.projected_area = projected;
+  // each weight is finite (checked where it is computed); their sum may still overflow: never a feasible surface
+  // with an infinite energy
+  if(!std::isfinite(s.energy) || !std::isfinite(s.solver_value))
+    throw std::invalid_argument("MDCS: the minimal surface's energy is not finite: the facet weights add up beyond "
+                                "the double range; scale the functional down");
 }
 
 // The facets of a minimum cut of the dual network (the surface) and whether the cut is finite.

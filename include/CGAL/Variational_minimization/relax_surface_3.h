@@ -61,6 +61,19 @@ struct Relaxed_surface_3
 
 namespace internal {
 
+// Every value of G is checked finite where it is evaluated; their sum may still overflow: never a relaxed surface
+// with an infinite energy.
+inline void check_relaxed_energy_3(const Relaxed_surface_3& r)
+{
+  if(!std::isfinite(r.energy))
+    throw std::invalid_argument("MDCS: relax_surface_3: the relaxed energy is not finite: the functional's values add "
+                                "up beyond the double range; scale the functional down");
+}
+
+} // namespace internal
+
+namespace internal {
+
 // Projected L-BFGS on box bounds [lo, hi] (equal bounds fix a variable). `energy_of(f, grad)` returns the energy
 // of f and, when grad is not null, its gradient; `first_step` is the largest change of a node in a steepest
 // descent restart. `start_energy`, if not null, receives the energy of the (clamped) start.
@@ -202,6 +215,7 @@ Relaxed_surface_3 relax_surface_on_polygon_3(const Surface_problem_3& problem, c
     for(std::size_t k = 0; k < m.size(); ++k) {
       const double x = m.nodes[k][0], y = m.nodes[k][1];
       f[k] = level == 0 ? initial(x, y) : (*sampler)(x, y);
+      if(!std::isfinite(f[k])) throw std::invalid_argument("MDCS: relax_surface_3: the start function is not finite");
       if(m.on_boundary[k]) {
         lo[k] = problem.lower_boundary(x, y);
         hi[k] = problem.is_relaxed() ? problem.upper_boundary(x, y) : lo[k];
@@ -229,6 +243,7 @@ Relaxed_surface_3 relax_surface_on_polygon_3(const Surface_problem_3& problem, c
   result.heights = previous;
   result.nodes = previous_mesh.nodes;
   result.triangles = previous_mesh.triangles;
+  check_relaxed_energy_3(result);
   return result;
 }
 
@@ -258,6 +273,12 @@ Relaxed_surface_3 relax_surface_3(const Surface_problem_3& problem, const Functi
   if(options.grids.empty()) throw std::invalid_argument("MDCS: relax_surface_3: no grid given");
   for(int n : options.grids)
     if(n < 1 || n > 4096) throw std::invalid_argument("MDCS: relax_surface_3: grid sizes must be in [1, 4096]");
+  if(options.grids.size() > 64) throw std::invalid_argument("MDCS: relax_surface_3: at most 64 grid levels");
+  // the L-BFGS memory sizes two arrays of `memory` vectors per node: bounded like the grids
+  if(options.memory < 1 || options.memory > 100 || options.max_iterations < 0 || !(options.tolerance >= 0) ||
+     !std::isfinite(options.tolerance))
+    throw std::invalid_argument("MDCS: relax_surface_3: memory must be in [1, 100], max_iterations >= 0 and tolerance "
+                                "finite and >= 0");
   CGAL::MDCS::internal::Progress_reporter<Progress> reporter(progress, "relaxation", options.grids.size());
   if(problem.is_polygonal()) {
     Relaxed_surface_3 r = internal::relax_surface_on_polygon_3(problem, G, initial, options, reporter);
@@ -276,8 +297,10 @@ Relaxed_surface_3 relax_surface_3(const Surface_problem_3& problem, const Functi
       for(int i = 0; i <= n; ++i) {
         const double x = g.x(i), y = g.y(j);
         const std::size_t k = g.index(i, j);
-        if(level == 0) f[k] = initial(x, y);
-        else {
+        if(level == 0) {
+          f[k] = initial(x, y);
+          if(!std::isfinite(f[k])) throw std::invalid_argument("MDCS: relax_surface_3: the start function is not finite");
+        } else {
           // Bilinear interpolation of the previous level.
           const double u = double(i) * previous_n / n, v = double(j) * previous_n / n;
           const int i0 = std::min(previous_n - 1, int(u)), j0 = std::min(previous_n - 1, int(v));
@@ -301,6 +324,7 @@ Relaxed_surface_3 relax_surface_3(const Surface_problem_3& problem, const Functi
   reporter.finish();
   result.n = previous_n;
   result.heights = previous;
+  internal::check_relaxed_energy_3(result);
   return result;
 }
 

@@ -134,7 +134,7 @@ Plane_selection_result_3 select_planes_3(const Surface_problem_3& problem, const
       const internal::Surface_height_sampler_3 height(result.surface, problem);
       internal::add_planes_near_surface_3(problem, options, height, near, rng, next);
     }
-    const std::vector<Lattice_plane_3> random = surface_planes_3(problem, n + pencils, fresh);
+    const std::vector<Lattice_plane_3> random = internal::draw_surface_planes_3(problem, n + pencils, fresh);
     for(std::size_t i = surface_pencil_count_3(problem, n + pencils, fresh); i < random.size() && next.size() < n; ++i)
       next.push_back(random[i]);
     // The kept planes keep their positions at the front: pencils first, as surface_planes_3 lists them.

@@ -74,6 +74,12 @@ double polygon_integral(const Functional& G, double A, double B, double C,
   double sum = 0;
   for(std::size_t i = 1; i + 1 < polygon.size(); ++i)
     sum += triangle_integral(G, A, B, C, polygon[0], polygon[i], polygon[i + 1], level);
+  if(!std::isfinite(sum)) {   // finite values of G whose integral overflows: +inf would silently forbid the facet
+    std::ostringstream s;
+    s << "MDCS: the functional's integral over a facet is not finite (its values are finite but too large) on the "
+         "plane z = " << A << " x + " << B << " y + " << C << "; scale the functional down";
+    throw std::invalid_argument(s.str());
+  }
   return sum;
 }
 

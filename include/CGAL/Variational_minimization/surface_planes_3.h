@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,7 +38,9 @@ inline const char* plane_distribution_name(Plane_distribution_3 d)
 struct Surface_plane_options_3
 {
   Plane_distribution_3 distribution = Plane_distribution_3::isotropic;
-  double max_slope = 2;          ///< slope_limited only: bound on |A| and |B| in world units
+  /// slope_limited only: bound on |A| and |B| in world units; finite, > 0, and at most
+  /// `surface_max_slope_3(problem)` (checked whatever the distribution)
+  double max_slope = 2;
   double pencil_fraction = 0.1;  ///< share of the planes forced through the boundary segments (at least one each)
   std::uint64_t seed = 1;
   /// `select_planes_3()` only: the share of the redrawn planes that pass through random points near the current
@@ -142,6 +145,56 @@ inline Lattice_plane_3 cone_plane(const std::array<std::int64_t, 3>& p, const st
 
 } // namespace internal
 
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  The most planes `surface_planes_3()` draws: 2^14. An arrangement of n planes in general position has up to
+  C(n, 3) + C(n, 2) + n + 1 cells (measured: about n^3 / 19 for the isotropic planes of the manual's tables, 3.9M
+  cells and 0.9 GiB at 420 planes), and `Plane_arrangement_3` holds at most 2^32 - 2 cells: far fewer planes
+  already exhaust any memory, and a count beyond this one can only be a mistake (it would size the plane list
+  itself: 32 bytes per plane).
+*/
+inline std::size_t surface_max_planes_3() { return std::size_t(1) << 14; }
+
+/*!
+  \ingroup PkgVariationalMinimizationSurfaces
+  The largest `Surface_plane_options_3::max_slope` for `problem`: 2^20 (zmax - zmin) / max(width, height) of the
+  domain's bounding box. The planes live in the integer lattice of `Plane_arrangement_3`, whose normals are scaled
+  to integers of at most 2^20: a plane that climbs more than 2^20 lattice steps per lattice step is vertical
+  there (and useless for a function graph); larger slopes also overflowed the integer conversions.
+*/
+inline double surface_max_slope_3(const Surface_problem_3& problem)
+{
+  const double w = (std::max)(problem.domain.xmax() - problem.domain.xmin(), problem.domain.ymax() - problem.domain.ymin());
+  return std::ldexp(problem.zmax - problem.zmin, 20) / w;
+}
+
+/// Throws `std::invalid_argument` when `options` cannot draw planes for `problem` (checked by `surface_planes_3()`
+/// and every entry point that draws planes): `pencil_fraction` outside [0, 1], `max_slope` not finite, not > 0 or
+/// above `surface_max_slope_3(problem)`, `selection_near_fraction` outside [0, 1], `selection_near_spread` not
+/// finite or negative. `problem` must be valid.
+inline void check_surface_plane_options_3(const Surface_problem_3& problem, const Surface_plane_options_3& options,
+                                          const char* who = "surface_planes_3")
+{
+  auto fail = [who](const std::string& what) { throw std::invalid_argument(std::string("MDCS: ") + who + ": " + what); };
+  if(!(options.pencil_fraction >= 0 && options.pencil_fraction <= 1)) fail("pencil_fraction must be in [0, 1]");
+  if(!(options.max_slope > 0) || !std::isfinite(options.max_slope)) {
+    std::ostringstream o;
+    o << "max_slope must be finite and > 0 (it is " << options.max_slope << ")";
+    fail(o.str());
+  }
+  const double steepest = surface_max_slope_3(problem);
+  if(options.max_slope > steepest) {
+    std::ostringstream o;
+    o << "max_slope = " << options.max_slope << " is steeper than " << steepest
+      << " = 2^20 (zmax - zmin) / domain size: such planes are vertical in the lattice of the arrangement";
+    fail(o.str());
+  }
+  if(!(options.selection_near_fraction >= 0 && options.selection_near_fraction <= 1))
+    fail("selection_near_fraction must be in [0, 1]");
+  if(!(options.selection_near_spread >= 0) || !std::isfinite(options.selection_near_spread))
+    fail("selection_near_spread must be finite and >= 0");
+}
+
 /// The number of pencil planes that `surface_planes_3(problem, n, options)` puts first in its list.
 inline std::size_t surface_pencil_count_3(const Surface_problem_3& problem, std::size_t n,
                                           const Surface_plane_options_3& options)
@@ -216,6 +269,11 @@ std::vector<Lattice_plane_3> polygon_surface_planes_3(const Surface_problem_3& p
 
 } // namespace internal
 
+namespace internal {
+inline std::vector<Lattice_plane_3> draw_surface_planes_3(const Surface_problem_3& problem, std::size_t n,
+                                                          const Surface_plane_options_3& options);
+} // namespace internal
+
 /*!
   \ingroup PkgVariationalMinimizationSurfaces
   \brief `n` random planes for `problem`: pencils of planes through the segments of the boundary curve(s)
@@ -228,16 +286,28 @@ std::vector<Lattice_plane_3> polygon_surface_planes_3(const Surface_problem_3& p
   cut needs. On a polygonal domain the list starts with the vertical planes through the polygon's edges, and the
   boundary cone is replaced by the planes of a triangulation of the boundary loop (ear clipping; any simple
   polygon), completed by pencils to one plane per segment (`surface_pencil_count_3()` counts all of these).
-  \throws std::invalid_argument if the problem is invalid.
+  \throws std::invalid_argument if the problem is invalid, `n > surface_max_planes_3()`, or the options are
+  (`check_surface_plane_options_3()`).
 */
 inline std::vector<Lattice_plane_3> surface_planes_3(const Surface_problem_3& problem, std::size_t n,
                                                      const Surface_plane_options_3& options = Surface_plane_options_3())
 {
   problem.validate();
-  if(!(options.pencil_fraction >= 0 && options.pencil_fraction <= 1))
-    throw std::invalid_argument("MDCS: surface_planes_3: pencil_fraction must be in [0, 1]");
-  if(options.distribution == Plane_distribution_3::slope_limited && !(options.max_slope > 0))
-    throw std::invalid_argument("MDCS: surface_planes_3: max_slope must be > 0");
+  check_surface_plane_options_3(problem, options);
+  if(n > surface_max_planes_3())
+    throw std::invalid_argument("MDCS: surface_planes_3: " + std::to_string(n) + " planes requested; at most " +
+                                std::to_string(surface_max_planes_3()) + " (an arrangement of n planes has up to about "
+                                "n^3 / 6 cells and holds at most 2^32 - 2)");
+  return internal::draw_surface_planes_3(problem, n, options);
+}
+
+namespace internal {
+
+// surface_planes_3() after its checks (problem, options and n <= surface_max_planes_3()); plane selection draws
+// up to n + pencils planes here to replace some of its n.
+inline std::vector<Lattice_plane_3> draw_surface_planes_3(const Surface_problem_3& problem, std::size_t n,
+                                                          const Surface_plane_options_3& options)
+{
   std::mt19937_64 rng(options.seed);
   if(problem.is_polygonal()) return internal::polygon_surface_planes_3(problem, n, options, rng);
   const std::int64_t L = Plane_arrangement_3::lattice_size;
@@ -272,6 +342,7 @@ inline std::vector<Lattice_plane_3> surface_planes_3(const Surface_problem_3& pr
   return planes;
 }
 
+} // namespace internal
 } // namespace Variational_minimization
 } // namespace CGAL
 

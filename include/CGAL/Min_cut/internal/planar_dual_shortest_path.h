@@ -231,6 +231,13 @@ private:
     if(total >= planar_reversed_bit || dual_.number_of_vertices >= std::numeric_limits<std::uint32_t>::max())
       throw std::invalid_argument(where + "the network is too large for 31-bit facet codes");
     const std::size_t nv = dual_.number_of_vertices;
+    // Every dual vertex that matters ends a dual edge or starts/ends the path: a count far beyond sizes the
+    // distance arrays (20 bytes per vertex) for nothing, and a wrong count is the likely cause.
+    const std::size_t useful = 2 * total + dual_.start_vertices.size() + dual_.end_vertices.size();
+    if(nv > useful)
+      throw std::invalid_argument(where + "the planar dual has " + std::to_string(nv) + " vertices, more than twice its " +
+                                  std::to_string(total) + " dual edges plus its start and end vertices: most would "
+                                  "belong to no edge");
     auto check = [&](const std::vector<Planar_dual::Edge>& edges, const char* what) {
       for(std::size_t k = 0; k < edges.size(); ++k)
         if(edges[k].a >= nv || edges[k].b >= nv)

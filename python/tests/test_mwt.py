@@ -1,0 +1,73 @@
+# Copyright (c) 2026 MDCS contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""mdcs.mwt against the C++ suite's oracles: the thesis's 13-wheel (LP 18.7636 fractional, MWT 18.7989), the
+Euler count of a triangulation, and the Delaunay triangulation as an upper bound (scipy.spatial)."""
+
+import numpy as np
+import pytest
+import scipy.spatial
+
+import mdcs
+
+
+def wheel(k):
+    a = 2 * np.pi * np.arange(k) / k
+    return np.vstack([[0, 0], np.c_[np.cos(a), np.sin(a)]])
+
+
+def weight(points, triangles, metric="L2"):
+    e = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]]), axis=1)
+    e = np.unique(e, axis=0)
+    d = points[e[:, 0]] - points[e[:, 1]]
+    if metric == "L1":
+        return np.abs(d).sum()
+    if metric == "Linf":
+        return np.abs(d).max(axis=1).sum()
+    return np.linalg.norm(d, axis=1).sum()
+
+
+def test_the_13_wheel():
+    p = wheel(13)
+    lp_only = mdcs.mwt.minimum_weight_triangulation(p, resolve_fractional=False, progress=False)
+    assert lp_only.status == "fractional_bound_only" and not lp_only.lp_integral
+    assert lp_only.lp_objective == pytest.approx(18.7636, abs=5e-5)
+    assert not lp_only.has_triangulation
+    r = mdcs.mwt.minimum_weight_triangulation(p, progress=False)
+    assert r.status == "optimal_after_branch_and_bound"
+    assert r.weight == pytest.approx(18.7989, abs=5e-5)
+    assert r.lower_bound <= r.weight
+    assert r.weight == pytest.approx(weight(p, r.triangles), rel=1e-12)
+    assert r.triangles.shape == (13, 3) and r.triangles.dtype == np.int64
+
+
+@pytest.mark.parametrize("solver", [s for s in mdcs.mwt.SOLVERS if s != "exact"])
+def test_random_points_every_solver(solver):
+    rng = np.random.default_rng(7)
+    p = rng.random((60, 2))
+    r = mdcs.mwt.minimum_weight_triangulation(p, solver=solver, progress=False)
+    assert r.status in ("certified_optimal", "optimal_after_branch_and_bound")
+    hull = scipy.spatial.ConvexHull(p)
+    assert len(r.triangles) == 2 * len(p) - len(hull.vertices) - 2  # Euler's count
+    # counter-clockwise triangles covering the hull exactly
+    a, b, c = p[r.triangles[:, 0]], p[r.triangles[:, 1]], p[r.triangles[:, 2]]
+    area = 0.5 * ((b - a)[:, 0] * (c - a)[:, 1] - (b - a)[:, 1] * (c - a)[:, 0])
+    assert np.all(area > 0) and area.sum() == pytest.approx(hull.volume, rel=1e-12)
+    assert r.weight == pytest.approx(weight(p, r.triangles), rel=1e-12)
+    delaunay = scipy.spatial.Delaunay(p)
+    assert r.weight <= weight(p, delaunay.simplices) + 1e-12  # the MWT is never heavier than Delaunay
+    assert r.lower_bound <= r.weight + 1e-9
+
+
+def test_metrics_and_the_lmt_skeleton():
+    rng = np.random.default_rng(3)
+    p = rng.random((40, 2))
+    l2 = mdcs.mwt.minimum_weight_triangulation(p, progress=False)
+    lmt = mdcs.mwt.minimum_weight_triangulation(p, use_lmt_skeleton=True, progress=False)
+    assert lmt.weight == pytest.approx(l2.weight, rel=1e-12)
+    for metric in ("L1", "Linf"):
+        r = mdcs.mwt.minimum_weight_triangulation(p, metric=metric, progress=False)
+        assert r.has_triangulation
+        assert r.weight == pytest.approx(weight(p, r.triangles, metric), rel=1e-12)
+        # the L2 optimum is a triangulation too: never lighter in this metric than the metric's own optimum
+        assert r.weight <= weight(p, l2.triangles, metric) + 1e-12
+    assert len(l2.edges) == 3 * len(p) - len(scipy.spatial.ConvexHull(p).vertices) - 3
