@@ -1,6 +1,7 @@
 // `mdcs geodesics`: its option table (geodesics_options.h) and its run (cmd_geodesics.h).
 #include "cmd_geodesics.h"
 #include "commands.h"
+#include "geodesic_matrix.h"
 
 #include <iostream>
 
@@ -12,6 +13,7 @@ int run_geodesics_command(Invocation& run)
 {
   Geodesics_settings s = parse_geodesics_settings(run.options);
   s.threads = threads_text(run.threads);
+  if(run.options.given("matrix")) return run_geodesic_matrix(run, s);
   Geodesics_run r = run_geodesics(s, run.progress);
   Run_summary_json json = geodesics_summary_json(s, r);
   json.write((std::filesystem::path(s.output) / "summary.json").string(), run, EXIT_OK);

@@ -27,8 +27,9 @@ Command_spec silhouette_spec()
     text_option("method", "M", "both", "picking, mapping or both", {"picking", "mapping", "both"}),
     integer_option("coarse-faces", "N", "1000", 4, 10000000, "faces of the coarse mesh"),
     real_option("alpha", "A", "0.1", 0, 1, "weight factor of fine silhouette edges in loop mapping", true),
-    integer_option("frames", "N", "0", 0, 3600, "also a rotation of N frames (frames.csv, frame_NNN.svg) and the temporal-\n"
-                   "coherence metric with and without the previous-frame remedy"),
+    integer_option("frames", "N", "0", 0, 3600, "also a rotation of N frames (frames.csv, frame_NNN.svg; computed in\n"
+                   "parallel, --threads) and the temporal-coherence metric with and without the\n"
+                   "previous-frame remedy"),
     flag_option("repair", "run CGAL's soup repair on a file that is not a valid mesh instead of refusing it (it\n"
                 "changes the surface; said on stderr, in the summaries and in the pictures' titles)"),
   };
@@ -59,6 +60,7 @@ int run_silhouette_command(Invocation& run)
   p.alpha = o.real("alpha");
   p.frames = long(o.integer("frames"));
   p.orthographic = o.flag("orthographic");
+  p.threads = run.threads.used();
   p.picture = run.picture();
   const std::string path = o.positional().front();
   p.name = path[0] == '@' ? path.substr(1) + " (generated)" : std::filesystem::path(path).filename().string();

@@ -167,6 +167,7 @@ struct Run_parameters
   int up = 1;
   bool picking = true, mapping = true, orthographic = false, picture = true;
   long frames = 0;
+  std::size_t threads = 0; // frames and temporal coherence in parallel (0: every hardware thread)
   std::string name = "mesh";
 };
 
@@ -293,54 +294,67 @@ inline Run_summary run_silhouette(const Mesh& fine, const Run_parameters& p, con
     const std::string frames_csv = (folder / "frames.csv").string();
     Output_file csv(frames_csv);
     csv << "frame,azimuth_deg,fine_edges,picked_edges,mapped_edges\n";
-    // Picture sequence with the chosen methods.
-    SS::Silhouette_frame prev, cur;
+    // The rotation: its frames in parallel (simplify_silhouette_frames; every frame equals the per-view calls),
+    // delivered in order, one at a time, possibly on a worker thread: no thread-local state below.
+    std::vector<View> views;
+    std::vector<Camera> cameras;
     for(long t = 0; t < p.frames; ++t) {
-      if(!progress("rotation", double(t) / double(p.frames))) throw CGAL::MDCS::Operation_cancelled("rotation");
-      const double az = p.azimuth + 360.0 * double(t) / double(p.frames);
-      Camera c = orbit_camera(box, az, p.elevation, p.up);
+      Camera c = orbit_camera(box, p.azimuth + 360.0 * double(t) / double(p.frames), p.elevation, p.up);
       c.perspective = !p.orthographic;
-      s.extract(view_of(c), cur);
-      if(p.picking) s.pick_loops(cur);
-      if(p.mapping) s.map_loops(cur, mo);
-      check_frame(s, cur, sum);
-      if(p.picture) {
-        std::vector<Edge_set> fs = {{"fine, " + std::to_string(cur.fine_silhouette.size()) + " edges", "#444", cur.fine_silhouette, 0.8}};
-        if(p.picking) fs.push_back({"picked, " + std::to_string(cur.picked_halfedges().size()) + " edges", "#2ca02c", cur.picked_halfedges(), 1.0});
-        if(p.mapping) fs.push_back({"mapped, " + std::to_string(cur.mapped_halfedges().size()) + " edges", "#d62728", cur.mapped_halfedges(), 1.0});
-        std::ostringstream name;
-        name << "frame_" << std::setw(p.frames > 1000 ? 4 : 3) << std::setfill('0') << t << ".svg";
-        write_svg((folder / name.str()).string(), s, {c}, {"front"}, fs, p.name + ", azimuth " + std::to_string(int(az)) + " deg");
-      }
-      csv << t << "," << az << "," << cur.fine_silhouette.size() << "," << cur.picked_halfedges().size() << ","
-          << cur.mapped_halfedges().size() << "\n";
+      cameras.push_back(c);
+      views.push_back(view_of(c));
     }
-    progress("rotation", 1.0);
+    SS::Silhouette_frames_options fo;
+    fo.pick = p.picking;
+    fo.map = p.mapping;
+    fo.mapping = mo;
+    fo.threads = p.threads;
+    auto stage = [&progress](const char* name, double f) { return progress(name, f); };
+    SS::simplify_silhouette_frames<CGAL::Parallel_if_available_tag>(
+      s, views, fo,
+      [&](std::size_t t, SS::Silhouette_frame& cur) {
+        const double az = p.azimuth + 360.0 * double(t) / double(p.frames);
+        check_frame(s, cur, sum);
+        if(p.picture) {
+          std::vector<Edge_set> fs = {{"fine, " + std::to_string(cur.fine_silhouette.size()) + " edges", "#444", cur.fine_silhouette, 0.8}};
+          if(p.picking) fs.push_back({"picked, " + std::to_string(cur.picked_halfedges().size()) + " edges", "#2ca02c", cur.picked_halfedges(), 1.0});
+          if(p.mapping) fs.push_back({"mapped, " + std::to_string(cur.mapped_halfedges().size()) + " edges", "#d62728", cur.mapped_halfedges(), 1.0});
+          std::ostringstream name;
+          name << "frame_" << std::setw(p.frames > 1000 ? 4 : 3) << std::setfill('0') << t << ".svg";
+          write_svg((folder / name.str()).string(), s, {cameras[t]}, {"front"}, fs, p.name + ", azimuth " + std::to_string(int(az)) + " deg");
+        }
+        csv << t << "," << az << "," << cur.fine_silhouette.size() << "," << cur.picked_halfedges().size() << ","
+            << cur.mapped_halfedges().size() << "\n";
+      },
+      CGAL::Min_cut::Default_max_flow_engine(), stage);
     csv.commit();
     sum.files.push_back(frames_csv);
     if(p.picture) sum.files.push_back((folder / "frame_*.svg").string());
     sum.rotation_s = seconds_since(t0);
-    // Temporal coherence over small steps (0.5 degree), both methods, with and without the remedy.
+    // Temporal coherence over small steps (0.5 degree), both methods, with and without the remedy (frame t biased
+    // by frame t - 1: simplify_silhouette_frames runs the biased method in view order, the extraction in parallel).
     t0 = std::chrono::steady_clock::now();
+    std::vector<View> steps;
+    for(long t = 0; t < 40; ++t) steps.push_back(view_of(orbit_camera(box, p.azimuth + 0.5 * double(t), p.elevation, p.up)));
     for(int variant = 0; variant < 4; ++variant) {
       const bool mapping = variant >= 2, remedy = variant % 2 == 1;
       if((mapping && !p.mapping) || (!mapping && !p.picking)) continue;
       std::vector<std::vector<std::uint32_t>> fsets, ssets;
-      SS::Loop_picking_options po;
-      SS::Loop_mapping_options m2 = mo;
-      if(remedy) { po.previous_bias = p.remedy_bias; m2.previous_bias = p.remedy_bias; }
-      for(long t = 0; t < 40; ++t) {
-        if(!progress("temporal coherence", (variant * 40 + t) / 160.0)) throw CGAL::MDCS::Operation_cancelled("temporal coherence");
-        s.extract(view_of(orbit_camera(box, p.azimuth + 0.5 * double(t), p.elevation, p.up)), cur);
-        if(mapping) s.map_loops(cur, m2, t > 0 ? &prev : nullptr);
-        else s.pick_loops(cur, po, t > 0 ? &prev : nullptr);
-        std::vector<std::uint32_t> f, e;
-        for(std::uint32_t h : cur.fine_silhouette) f.push_back(s.fine().edge(h));
-        for(std::uint32_t h : mapping ? cur.mapped_halfedges() : cur.picked_halfedges()) e.push_back(s.fine().edge(h));
-        fsets.push_back(f);
-        ssets.push_back(e);
-        std::swap(prev, cur);
-      }
+      SS::Silhouette_frames_options co = fo;
+      co.pick = !mapping;
+      co.map = mapping;
+      if(remedy) { co.picking.previous_bias = p.remedy_bias; co.mapping.previous_bias = p.remedy_bias; }
+      auto step_progress = [&progress, variant](const char*, double f) { return progress("temporal coherence", (variant + f) / 4.0); };
+      SS::simplify_silhouette_frames<CGAL::Parallel_if_available_tag>(
+        s, steps, co,
+        [&](std::size_t, SS::Silhouette_frame& cur) {
+          std::vector<std::uint32_t> f, e;
+          for(std::uint32_t h : cur.fine_silhouette) f.push_back(s.fine().edge(h));
+          for(std::uint32_t h : mapping ? cur.mapped_halfedges() : cur.picked_halfedges()) e.push_back(s.fine().edge(h));
+          fsets.push_back(std::move(f));
+          ssets.push_back(std::move(e));
+        },
+        CGAL::Min_cut::Default_max_flow_engine(), step_progress);
       sum.incoherence[variant] = SS::temporal_incoherence(ssets, fsets);
     }
     progress("temporal coherence", 1.0);

@@ -111,8 +111,9 @@ inline Command_spec geodesics_command_spec()
   s.options = {
     text_option("source", "SPEC", "", "comma-separated sources (required): vertex indices (0,17) and/or surface points\n"
                 "f:FACE:B0:B1:B2 (weights of the face's corners in the order distances.ply lists them;\n"
-                ">= 0, normalised)"),
-    text_option("targets", "SPEC", "", "shortest paths to these points, same syntax (default: the farthest reachable vertex)"),
+                ">= 0, normalised); with --matrix: vertex indices or 'all'"),
+    text_option("targets", "SPEC", "", "shortest paths to these points, same syntax (default: the farthest reachable vertex);\n"
+                "with --matrix npy: the columns (vertex indices; default: every vertex)"),
     text_option("method", "M", "exact", "exact: interval (window) propagation, Exact_geodesic_distances_3\n"
                 "flat-exact: one interval per edge (thesis ch. 4.3)\n"
                 "merged:EPS: windows merged when their distances differ by at most EPS (0 to 1000)\n"
@@ -133,6 +134,14 @@ inline Command_spec geodesics_command_spec()
     flag_option("compare-exact", "also run the exact method (same sources and limits); report its time and the error of\n"
                 "--method: mean relative error (thesis eq. 4.4.1), max relative and absolute error"),
     flag_option("compare-cgal", "also run CGAL::Surface_mesh_shortest_path; report the largest difference and both times"),
+    text_option("matrix", "FORMAT", "", "distance matrix mode, rows = --source (parallel, --threads): npy: dense rows as\n"
+                "DIR/distances.npy (NumPy float64, inf = unreachable or beyond --max-distance);\n"
+                "mtx: the sparse matrix of the pairs within --max-distance as DIR/distances.mtx\n"
+                "(Matrix Market, 1-based); no paths, no picture", {"npy", "mtx"}),
+    real_option("max-distance", "D", "", 0, 1e300, "with --matrix: pairs farther than D (mesh units) are not computed; each\n"
+                "source then costs what its neighbourhood costs (required by mtx)"),
+    flag_option("symmetric", "with --matrix mtx --source all: a symmetric matrix, each pair the smaller of its two\n"
+                "directions (equal for the exact method up to rounding; written as the lower triangle)"),
     flag_option("repair", "run CGAL's soup repair on a file that is not a valid mesh instead of refusing it; it\n"
                 "changes the surface (merges, reorients, cuts non-manifold parts open): said on stderr,\n"
                 "in summary.txt and summary.json, and indices then refer to the repaired mesh"),
@@ -144,6 +153,7 @@ inline Command_spec geodesics_command_spec()
     "length, points, and the path as mesh locations: vertices, edge crossings, face points), paths.csv (the points),\n"
     "isolines.csv (iso-distance polylines: level, line, position, x, y, z), geodesics.svg/.png (not with\n"
     "--no-picture), summary.txt, summary.json.\n"
+    "With --matrix: distances.npy or distances.mtx, summary.txt, summary.json.\n"
     "Exit codes: 2 for a malformed or out-of-range --source/--targets, an unknown --method or a surface-point source\n"
     "with the heat method; 3 for a mesh file that is malformed (the message names the line or element), is not a\n"
     "valid oriented manifold mesh (without --repair), has no face, or that the heat method cannot handle; 1 when a\n"
@@ -154,6 +164,11 @@ inline Command_spec geodesics_command_spec()
 inline Geodesics_settings parse_geodesics_settings(const Parsed_options& o)
 {
   Geodesics_settings s;
+  if(!o.given("matrix"))
+    for(const char* name : {"max-distance", "symmetric"})
+      if(o.given(name)) throw Usage_error(std::string("--") + name + " applies to --matrix only");
+  if(o.text("source") == "all" && !o.given("matrix"))
+    throw Usage_error("--source all needs --matrix (one distance field per source is a matrix)");
   if(!o.given("source")) throw Usage_error("--source is required (vertex indices such as 0,17 or face points f:FACE:B0:B1:B2)");
   s.sources = o.text("source");
   s.targets = o.text("targets");
