@@ -4,6 +4,10 @@
 // The one concurrency convention of MDCS: CGAL's concurrency tags plus a thread count, on TBB when the program is
 // linked with it (CGAL::TBB_support defines CGAL_LINKED_WITH_TBB), sequential otherwise. Every package runs its
 // parallel loops through this header; none carries its own thread pool.
+//
+// A second back end on std::thread exists for ThreadSanitizer builds only (MDCS_CONCURRENCY_STD_THREADS, set by
+// the CMake option MDCS_TSAN, TBB not linked): Debian's TBB is not instrumented, so TSan sees none of its
+// synchronisation and reports races inside TBB itself; on std::thread it checks the parallel bodies alone.
 
 #ifndef CGAL_MDCS_CONCURRENCY_H
 #define CGAL_MDCS_CONCURRENCY_H
@@ -29,6 +33,11 @@
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
+#elif defined(MDCS_CONCURRENCY_STD_THREADS)
+#define CGAL_MDCS_CONCURRENCY_USES_STD_THREADS 1
+#include <functional>
+#include <memory>
+#include <utility>
 #endif
 
 namespace CGAL {
@@ -54,7 +63,7 @@ inline std::size_t hardware_threads()
 /// Whether TBB is linked in, i.e. whether a parallel tag can run more than one thread.
 constexpr bool has_parallel_support()
 {
-#ifdef CGAL_LINKED_WITH_TBB
+#if defined(CGAL_LINKED_WITH_TBB) || defined(CGAL_MDCS_CONCURRENCY_USES_STD_THREADS)
   return true;
 #else
   return false;
@@ -82,7 +91,7 @@ std::size_t effective_threads(std::size_t requested)
 /// The same for a run-time choice (the command-line tool and the Python layer): `threads` 0 means all.
 inline std::size_t effective_threads(std::size_t requested, bool parallel)
 {
-  return parallel ? effective_threads<CGAL::Parallel_if_available_tag>(requested) : 1;
+  return parallel ? effective_threads<CGAL::Parallel_tag>(requested) : 1;
 }
 
 namespace internal {
@@ -134,6 +143,39 @@ void parallel_for_blocks(std::size_t n, std::size_t block_size, std::size_t thre
                       },
                       tbb::simple_partitioner());
   });
+#elif defined(CGAL_MDCS_CONCURRENCY_USES_STD_THREADS)
+  // threads - 1 workers and the caller take the next block from a counter; the first exception stops the loop
+  const std::size_t used = (std::min)(threads, count);
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr first;
+  std::mutex first_mutex;
+  auto work = [&] {
+    for(;;) {
+      if(failed.load())
+        return;
+      const std::size_t b = next.fetch_add(1);
+      if(b >= count)
+        return;
+      try {
+        body(blocks.begin(b), blocks.end(b), b);
+      } catch(...) {
+        std::lock_guard<std::mutex> lock(first_mutex);
+        if(!first)
+          first = std::current_exception();
+        failed.store(true);
+      }
+    }
+  };
+  std::vector<std::thread> workers;
+  workers.reserve(used - 1);
+  for(std::size_t t = 1; t < used; ++t)
+    workers.emplace_back(work);
+  work();
+  for(std::thread& t : workers)
+    t.join();
+  if(first)
+    std::rethrow_exception(first);
 #endif
 }
 
@@ -156,8 +198,10 @@ class Per_thread
 public:
   template <class Make>
   explicit Per_thread(Make make)
-#ifdef CGAL_LINKED_WITH_TBB
+#if defined(CGAL_LINKED_WITH_TBB)
     : storage_([make] { return make(); })
+#elif defined(CGAL_MDCS_CONCURRENCY_USES_STD_THREADS)
+    : make_(make)
 #else
     : value_(make())
 #endif
@@ -165,8 +209,16 @@ public:
 
   T& local()
   {
-#ifdef CGAL_LINKED_WITH_TBB
+#if defined(CGAL_LINKED_WITH_TBB)
     return storage_.local();
+#elif defined(CGAL_MDCS_CONCURRENCY_USES_STD_THREADS)
+    const std::thread::id me = std::this_thread::get_id();
+    std::lock_guard<std::mutex> lock(mutex_);
+    for(auto& o : objects_)
+      if(o.first == me)
+        return *o.second;
+    objects_.emplace_back(me, std::unique_ptr<T>(new T(make_())));
+    return *objects_.back().second;
 #else
     return value_;
 #endif
@@ -176,17 +228,24 @@ public:
   template <class F>
   void for_each(F f)
   {
-#ifdef CGAL_LINKED_WITH_TBB
+#if defined(CGAL_LINKED_WITH_TBB)
     for(T& t : storage_)
       f(t);
+#elif defined(CGAL_MDCS_CONCURRENCY_USES_STD_THREADS)
+    for(auto& o : objects_)
+      f(*o.second);
 #else
     f(value_);
 #endif
   }
 
 private:
-#ifdef CGAL_LINKED_WITH_TBB
+#if defined(CGAL_LINKED_WITH_TBB)
   tbb::enumerable_thread_specific<T> storage_;
+#elif defined(CGAL_MDCS_CONCURRENCY_USES_STD_THREADS)
+  std::function<T()> make_;
+  std::mutex mutex_;
+  std::vector<std::pair<std::thread::id, std::unique_ptr<T>>> objects_;
 #else
   T value_;
 #endif
