@@ -14,9 +14,12 @@
 #include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Face_dp_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Lmt_skeleton_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Parallel_stage_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Validation_2.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
@@ -38,12 +41,17 @@ namespace Minimum_weight_triangulation_2 {
 
   \tparam Kernel a CGAL kernel; with `Exact_predicates_inexact_constructions_kernel` every combinatorial
   decision (collinearity, emptiness, side of an edge, validation) is exact.
+  \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
+  `CGAL::Parallel_if_available_tag`: with a parallel tag and TBB, the candidate edges, the empty triangles, the
+  LMT-skeleton, the face programs and the validation run on `Mwt_options::threads` threads (0: all), over
+  blocks fixed by the input, so that every result is the same for every thread count. The LP and branch and
+  bound stay sequential.
 
   Usage: construct (checks the input, computes the hull), then `compute_candidate_edges()`,
   `compute_empty_triangles()`, `build_linear_program()`, `solve(solver)`; `minimum_weight_triangulation_2()`
   runs all of them. Every stage can be inspected (`candidate_edges()`, `linear_program()`, ...).
 */
-template <class Kernel>
+template <class Kernel, class ConcurrencyTag = CGAL::Sequential_tag>
 class Minimum_weight_triangulation_lp_2
 {
 public:
@@ -72,6 +80,8 @@ private:
   {
     const auto t0 = Stage_clock::now();
     if(!options_.progress) options_.progress = [](const char*, double) { return true; };
+    par_ = internal::Parallel_stage(CGAL::MDCS::effective_threads<ConcurrencyTag>(options_.threads));
+    stats_.threads = par_.threads();
     hull_ = internal::checked_hull_boundary(pts_);
     grid_.reset(new internal::Point_grid_2(pts_, 2.0));
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
@@ -108,11 +118,12 @@ public:
     const auto t0 = Stage_clock::now();
     if(options_.pruning == Pruning::diamond && (options_.metric != Edge_metric::L2 || options_.triangle_weight))
       throw std::invalid_argument("minimum_weight_triangulation_2: the diamond test is valid for the Euclidean metric only");
-    edges_ = uses_diamond_test() ? internal::diamond_candidate_edges(pts_, *grid_, options_.progress)
-                                 : internal::all_valid_edges(pts_, *grid_, options_.progress);
+    const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_candidates);
+    edges_ = uses_diamond_test() ? internal::diamond_candidate_edges(pts_, *grid_, options_.progress, par)
+                                 : internal::all_valid_edges(pts_, *grid_, options_.progress, par);
     // hull edges are always candidates (one side is empty); make sure of it
     index_.reset();
-    index_.reset(new internal::Edge_index(edges_, pts_.size()));
+    index_.reset(new internal::Edge_index(edges_, pts_.size(), par));
     const std::size_t found = edges_.size();
     for(std::size_t i = 0; i < hull_.size(); ++i) {
       const int a = hull_[i], b = hull_[(i + 1) % hull_.size()];
@@ -120,7 +131,7 @@ public:
     }
     if(edges_.size() != found) {
       index_.reset();
-      index_.reset(new internal::Edge_index(edges_, pts_.size()));
+      index_.reset(new internal::Edge_index(edges_, pts_.size(), par));
     }
     is_hull_.assign(edges_.size(), 0);
     for(std::size_t i = 0; i < hull_.size(); ++i) is_hull_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])] = 1;
@@ -135,7 +146,8 @@ public:
     internal::Triangle_set all = [&] {
       // a finer grid for the emptiness tests of small triangles (fewer points in a triangle's box), freed after
       internal::Point_grid_2 fine(pts_, 0.5);
-      return internal::empty_triangles(pts_, fine, *index_, edges_, options_.progress);
+      return internal::empty_triangles(pts_, fine, *index_, edges_, options_.progress,
+                                       par_.timed(&stats_.time_parallel_triangles));
     }();
     stats_.empty_triangles = all.size();
     stats_.time_triangles = since(t0);
@@ -600,6 +612,7 @@ private:
   std::vector<Point_2> input_;
   internal::Indexed_points_2<Kernel> pts_;
   Mwt_options options_;
+  internal::Parallel_stage par_;   // the thread count (effective_threads of the tag and options_.threads)
   std::vector<int> hull_;
   std::unique_ptr<internal::Point_grid_2> grid_;
   double scale_ = 1, upper_weight_ = 0;

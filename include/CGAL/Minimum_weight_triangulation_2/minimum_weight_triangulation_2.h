@@ -49,12 +49,16 @@ inline bool has_lp_solver(Lp_solver_choice c)
 /*!
   \brief Minimum weight triangulation of a point set by the triangle-based LP with a user LP solver.
 
+  \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+  the candidate edges, empty triangles, LMT-skeleton, face programs and validation then run on
+  `options.threads` threads (0: all hardware threads; sequential without TBB). The triangles, the weight, the
+  bounds and the status are the same for every thread count.
   \tparam PointRange a range of `Point_2` of a CGAL kernel.
   \tparam LpSolver a model of `LinearProgramSolver`.
   `binary_solver` (may be empty) solves the 0/1 version of an LP; it resolves fractional LP optima.
   \throws std::invalid_argument on bad input (fewer than 3 points, duplicates, non-finite, all collinear).
 */
-template <class PointRange, class LpSolver>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class PointRange, class LpSolver>
 Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_options& options, const LpSolver& solver,
     std::function<Linear_program_solution(const Sparse_linear_program&)> binary_solver)
 {
@@ -88,7 +92,7 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
 #endif
   Mwt_result r;
   try {
-    Minimum_weight_triangulation_lp_2<Kernel> mwt(std::move(p), options);   // no second copy of the points
+    Minimum_weight_triangulation_lp_2<Kernel, ConcurrencyTag> mwt(std::move(p), options);   // no second copy of the points
     mwt.compute_candidate_edges();
     mwt.compute_empty_triangles();
     mwt.build_linear_program();
@@ -111,11 +115,14 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   (automatic: CLP's dual simplex when available, else GLPK). Fractional LP optima are resolved by GLPK's
   branch and cut when `options.resolve_fractional` and GLPK is available.
 
+  `ConcurrencyTag` and `options.threads` as above, e.g.
+  `minimum_weight_triangulation_2<CGAL::Parallel_if_available_tag>(points, options)`.
+
   \returns a `Mwt_result`: the triangles (index triples, counter-clockwise), the weight, the status and a
   rigorous lower bound.
   \throws std::invalid_argument on bad input, std::runtime_error when the requested solver is not built in.
 */
-template <class PointRange>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class PointRange>
 Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_options& options = Mwt_options())
 {
   std::function<Linear_program_solution(const Sparse_linear_program&)> bb;
@@ -138,11 +145,11 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   }
   switch(c) {
 #if defined(MDCS_HAS_CLP)
-    case Lp_solver_choice::clp: return minimum_weight_triangulation_2(points, options, CLP_linear_program_solver(), bb);
+    case Lp_solver_choice::clp: return minimum_weight_triangulation_2<ConcurrencyTag>(points, options, CLP_linear_program_solver(), bb);
 #endif
 #if defined(MDCS_HAS_GLPK)
-    case Lp_solver_choice::glpk: return minimum_weight_triangulation_2(points, options, GLPK_linear_program_solver(), bb);
-    case Lp_solver_choice::exact: return minimum_weight_triangulation_2(points, options, GLPK_linear_program_solver(true), bb);
+    case Lp_solver_choice::glpk: return minimum_weight_triangulation_2<ConcurrencyTag>(points, options, GLPK_linear_program_solver(), bb);
+    case Lp_solver_choice::exact: return minimum_weight_triangulation_2<ConcurrencyTag>(points, options, GLPK_linear_program_solver(true), bb);
 #endif
     default: break;
   }

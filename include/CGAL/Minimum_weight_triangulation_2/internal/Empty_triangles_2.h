@@ -10,6 +10,8 @@
 #define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_EMPTY_TRIANGLES_2_H
 
 #include <CGAL/Minimum_weight_triangulation_2/internal/Candidate_edges_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Parallel_stage_2.h>
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 
 #include <algorithm>
@@ -39,6 +41,10 @@ class Triangle_set
 {
 public:
   explicit Triangle_set(const std::vector<Edge>& edges) : edges_(&edges) {}
+  /// Takes the triangles (three edge indices each, as edges(t)) over.
+  Triangle_set(const std::vector<Edge>& edges, std::vector<std::array<int, 3>>&& by_edges)
+    : edges_(&edges), e_(std::move(by_edges))
+  {}
   Triangle_set(const std::vector<Edge>& edges, const std::vector<Lp_triangle>& tri) : edges_(&edges)
   {
     e_.reserve(tri.size());
@@ -100,13 +106,15 @@ class Edge_index
 public:
   struct Entry { int v, edge; };
 
-  explicit Edge_index(const std::vector<Edge>& edges, std::size_t n)
-    : Edge_index(edges, n, [](std::size_t) { return true; })
+  explicit Edge_index(const std::vector<Edge>& edges, std::size_t n, const Parallel_stage& par = Parallel_stage())
+    : Edge_index(edges, n, [](std::size_t) { return true; }, par)
   {}
 
-  /// The index of the edges i with keep(i) only (find() gives -1 for the others).
+  /// The index of the edges i with keep(i) only (find() gives -1 for the others). The rows are sorted in
+  /// parallel (`par`); the filling stays sequential (it writes every row).
   template <class Keep>
-  Edge_index(const std::vector<Edge>& edges, std::size_t n, Keep keep) : start_(n + 1, 0)
+  Edge_index(const std::vector<Edge>& edges, std::size_t n, Keep keep, const Parallel_stage& par = Parallel_stage())
+    : start_(n + 1, 0)
   {
     if(2 * edges.size() >= std::size_t(UINT32_MAX))
       throw std::length_error("minimum_weight_triangulation_2: too many candidate edges for 32-bit indices");
@@ -120,9 +128,11 @@ public:
       nbr_[fill[std::size_t(edges[i].first)]++] = Entry{edges[i].second, int(i)};
       nbr_[fill[std::size_t(edges[i].second)]++] = Entry{edges[i].first, int(i)};
     }
-    for(std::size_t v = 0; v < n; ++v)
-      std::sort(nbr_.begin() + std::ptrdiff_t(start_[v]), nbr_.begin() + std::ptrdiff_t(start_[v + 1]),
-                [](const Entry& x, const Entry& y) { return x.v < y.v; });
+    par.for_blocks(n, 4096, [&](std::size_t v0, std::size_t v1, std::size_t) {
+      for(std::size_t v = v0; v < v1; ++v)
+        std::sort(nbr_.begin() + std::ptrdiff_t(start_[v]), nbr_.begin() + std::ptrdiff_t(start_[v + 1]),
+                  [](const Entry& x, const Entry& y) { return x.v < y.v; });
+    });
   }
 
   /// Index of the edge ab, -1 if it is no candidate.
@@ -145,43 +155,53 @@ private:
 };
 
 /// Every empty triangle whose sides are candidate edges (exact orientations), by edges (`edges`: the
-/// candidate edges of `index`).
+/// candidate edges of `index`). Triangle (a < b < c) is found from a: the common neighbours c > b of a and b
+/// (a merge of their sorted rows). Blocks of vertices a in parallel (`par`), joined in the order of a.
 template <class P, class Progress>
 Triangle_set empty_triangles(const P& pts, const Point_grid_2& grid, const Edge_index& index,
-                             const std::vector<Edge>& edges, Progress& progress)
+                             const std::vector<Edge>& edges, Progress& progress,
+                             const Parallel_stage& par = Parallel_stage())
 {
+  typedef std::array<int, 3> By_edges;
   const int n = int(pts.size());
-  std::vector<int> mark(std::size_t(n), -1), mark_edge(std::size_t(n), -1);
-  Triangle_set out(edges);
+  std::vector<By_edges> out;
   out.reserve(index.degree_sum() / 2 * 27 / 10 + 16);   // about 2.6 triangles per edge on uniform points
-  CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "empty triangles", std::size_t(n));
-  for(int a = 0; a < n; ++a) {
-    report(std::size_t(a));
-    for(const auto* e = index.begin(a); e != index.end(a); ++e) { mark[e->v] = a; mark_edge[e->v] = e->edge; }
-    for(const auto* eb = index.begin(a); eb != index.end(a); ++eb) {
-      const int b = eb->v;
-      if(b <= a) continue;
-      for(const auto* ec = index.begin(b); ec != index.end(b); ++ec) {
-        const int c = ec->v;
-        if(c <= b || mark[c] != a) continue;
-        const int o = pts.orientation(a, b, c);
-        if(o == 0) continue;
-        const double x0 = std::min({pts.x(a), pts.x(b), pts.x(c)}), x1 = std::max({pts.x(a), pts.x(b), pts.x(c)});
-        const double y0 = std::min({pts.y(a), pts.y(b), pts.y(c)}), y1 = std::max({pts.y(a), pts.y(b), pts.y(c)});
-        const bool occupied = grid.any_in_box_xy(x0, y0, x1, y1, [&](int r, double rx, double ry) {
-          if(r == a || r == b || r == c) return false;
-          return pts.orientation(a, b, r, rx, ry) == o && pts.orientation(b, c, r, rx, ry) == o &&
-                 pts.orientation(c, a, r, rx, ry) == o;
-        });
-        if(occupied) continue;
-        // counter-clockwise (a, b, c) with the sides ab, bc, ca, or (a, c, b) with ac, cb, ba
-        if(o > 0) out.push_back(eb->edge, ec->edge, mark_edge[c]);
-        else out.push_back(mark_edge[c], ec->edge, eb->edge);
+  CGAL::MDCS::Parallel_progress<Progress> report(progress, "empty triangles", std::size_t(n));
+  par.append_in_order(std::size_t(n), 512, out, [&](std::size_t a0, std::size_t a1, std::vector<By_edges>& block_out) {
+    if(report.cancelled()) return;
+    for(int a = int(a0); a < int(a1); ++a) {
+      const Edge_index::Entry* const a_end = index.end(a);
+      for(const auto* eb = index.begin(a); eb != a_end; ++eb) {
+        const int b = eb->v;
+        if(b <= a) continue;
+        // the rows are sorted by neighbour: the neighbours c > b of b that are neighbours of a (edge ac = ea->edge)
+        const Edge_index::Entry* ea = eb + 1;
+        for(const auto* ec = index.begin(b); ec != index.end(b) && ea != a_end; ++ec) {
+          const int c = ec->v;
+          if(c <= b) continue;
+          while(ea != a_end && ea->v < c) ++ea;
+          if(ea == a_end || ea->v != c) continue;
+          const int ac = ea->edge;
+          const int o = pts.orientation(a, b, c);
+          if(o == 0) continue;
+          const double x0 = std::min({pts.x(a), pts.x(b), pts.x(c)}), x1 = std::max({pts.x(a), pts.x(b), pts.x(c)});
+          const double y0 = std::min({pts.y(a), pts.y(b), pts.y(c)}), y1 = std::max({pts.y(a), pts.y(b), pts.y(c)});
+          const bool occupied = grid.any_in_box_xy(x0, y0, x1, y1, [&](int r, double rx, double ry) {
+            if(r == a || r == b || r == c) return false;
+            return pts.orientation(a, b, r, rx, ry) == o && pts.orientation(b, c, r, rx, ry) == o &&
+                   pts.orientation(c, a, r, rx, ry) == o;
+          });
+          if(occupied) continue;
+          // counter-clockwise (a, b, c) with the sides ab, bc, ca, or (a, c, b) with ac, cb, ba
+          if(o > 0) block_out.push_back(By_edges{{eb->edge, ec->edge, ac}});
+          else block_out.push_back(By_edges{{ac, ec->edge, eb->edge}});
+        }
       }
     }
-  }
+    report.advance(a1 - a0);
+  });
   report.finish();
-  return out;
+  return Triangle_set(edges, std::move(out));
 }
 
 /// Removes triangles on interior edges that have triangles on one side only, until none is left.

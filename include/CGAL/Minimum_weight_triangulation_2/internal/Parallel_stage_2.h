@@ -1,0 +1,114 @@
+// Copyright (c) 2026 MDCS contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// How the stages of the MWT pipeline run their loops in parallel, on the shared helper CGAL/MDCS/concurrency.h:
+// a thread count, the time spent inside parallel loops (the rest of a stage is serial: the benchmark derives
+// the serial fractions of an Amdahl projection from it), blocks whose outputs are appended in block order,
+// and progress/cancellation from the calling thread only (CGAL::MDCS::Parallel_progress: the workers count
+// finished items, a body returns early once the run is cancelled, and finish() throws after the loop).
+//
+// Every loop cuts its range into blocks that depend on the input size alone (never on the thread count), and
+// every output is written per block and joined in block order, so the stages give bit-identical results for
+// every thread count, including one.
+
+#ifndef CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_PARALLEL_STAGE_2_H
+#define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_PARALLEL_STAGE_2_H
+
+#include <CGAL/MDCS/concurrency.h>
+#include <CGAL/MDCS/progress.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <ctime>
+#include <vector>
+
+namespace CGAL {
+namespace Minimum_weight_triangulation_2 {
+namespace internal {
+
+/// Seconds of the stage clock: processor time of the process with MDCS_MWT_CPU_TIMERS (benchmarks on a shared
+/// machine; summed over the threads), wall-clock time otherwise.
+inline double stage_clock_seconds()
+{
+#if defined(MDCS_MWT_CPU_TIMERS)
+  return double(std::clock()) / CLOCKS_PER_SEC;
+#else
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+#endif
+}
+
+/*!
+  The thread count of a run and the clock of its parallel loops. `loop_time`, when given, receives the
+  stage-clock seconds spent inside parallel loops (measured on the calling thread, so at one thread the
+  stage's time minus this is its serial part).
+*/
+class Parallel_stage
+{
+public:
+  explicit Parallel_stage(std::size_t threads = 1, double* loop_time = nullptr)
+    : threads_(threads == 0 ? 1 : threads), loop_time_(loop_time)
+  {}
+
+  std::size_t threads() const { return threads_; }
+  bool parallel() const { return threads_ > 1; }
+  /// The same thread count, timing into another accumulator (one per stage).
+  Parallel_stage timed(double* loop_time) const { return Parallel_stage(threads_, loop_time); }
+
+  /// body(begin, end, block) over the blocks of [0, n) of `block` items (see CGAL::MDCS::parallel_for_blocks).
+  template <class Body>
+  void for_blocks(std::size_t n, std::size_t block, Body body) const
+  {
+    const double t0 = loop_time_ ? stage_clock_seconds() : 0;
+    CGAL::MDCS::parallel_for_blocks(n, block, threads_, body);
+    if(loop_time_)
+      *loop_time_ += stage_clock_seconds() - t0;
+  }
+
+  /*!
+    produce(begin, end, out) appends the results of the items [begin, end) to `out` (a vector of its own per
+    block); the blocks' vectors are appended to `result` in block order, a window of blocks at a time so that
+    the blocks' copies never hold more than one window (the outputs can be gigabytes: the empty triangles).
+    The result is the sequential loop's for every thread count.
+  */
+  template <class T, class Produce>
+  void append_in_order(std::size_t n, std::size_t block, std::vector<T>& result, Produce produce) const
+  {
+    if(block == 0)
+      block = 1;
+    const std::size_t blocks = (n + block - 1) / block;
+    if(!parallel()) {
+      // one thread: straight into the result (no copies); same items in the same order
+      const double t0 = loop_time_ ? stage_clock_seconds() : 0;
+      for(std::size_t b = 0; b < blocks; ++b)
+        produce(b * block, (std::min)(n, (b + 1) * block), result);
+      if(loop_time_)
+        *loop_time_ += stage_clock_seconds() - t0;
+      return;
+    }
+    const std::size_t window = (std::max)(std::size_t(256), 16 * threads_);
+    std::vector<std::vector<T>> out;
+    for(std::size_t w0 = 0; w0 < blocks; w0 += window) {
+      const std::size_t w1 = (std::min)(blocks, w0 + window);
+      out.assign(w1 - w0, std::vector<T>());
+      for_blocks((w1 - w0) * block, block, [&](std::size_t, std::size_t, std::size_t k) {
+        const std::size_t b = w0 + k;
+        produce(b * block, (std::min)(n, (b + 1) * block), out[k]);
+      });
+      for(std::vector<T>& v : out) {
+        result.insert(result.end(), v.begin(), v.end());
+        std::vector<T>().swap(v);
+      }
+    }
+  }
+
+private:
+  std::size_t threads_;
+  double* loop_time_;
+};
+
+} // namespace internal
+} // namespace Minimum_weight_triangulation_2
+} // namespace CGAL
+
+#endif // CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_PARALLEL_STAGE_2_H
