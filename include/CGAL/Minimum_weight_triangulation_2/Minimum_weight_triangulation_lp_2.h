@@ -386,8 +386,9 @@ private:
     auto t0 = Stage_clock::now();
     index_.reset();
     {
-      const internal::Edge_triangles by_edge(all, edges_.size());
-      lmt_state_ = internal::lmt_skeleton(pts_, edges_, all, by_edge, is_hull_, options_.progress);
+      const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_lmt);
+      const internal::Edge_triangles by_edge(all, edges_.size(), par);
+      lmt_state_ = internal::lmt_skeleton(pts_, edges_, all, by_edge, is_hull_, options_.progress, par);
     }
     for(char c : lmt_state_) {
       if(c == internal::lmt_certain) ++stats_.lmt_certain_edges;
@@ -396,25 +397,32 @@ private:
     stats_.time_lmt = since(t0);
     if(!options_.progress("face dynamic program", 0)) throw CGAL::MDCS::Operation_cancelled("face dynamic program");
     t0 = Stage_clock::now();
+    const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_face_dp);
     all.compact([&](int t) {
       const auto& te = all.edges(t);
       return lmt_state_[te[0]] != internal::lmt_impossible && lmt_state_[te[1]] != internal::lmt_impossible &&
              lmt_state_[te[2]] != internal::lmt_impossible;
-    });
+    }, par);
     // the index of the edges that are not impossible: all that the face programs and the LP rows look up
     index_.reset(new internal::Edge_index(edges_, pts_.size(),
-                                          [&](std::size_t e) { return lmt_state_[e] != internal::lmt_impossible; }));
-    const internal::Edge_triangles by_edge(all, edges_.size());
-    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, all, by_edge, lmt_state_);
+                                          [&](std::size_t e) { return lmt_state_[e] != internal::lmt_impossible; }, par));
+    const internal::Edge_triangles by_edge(all, edges_.size(), par);
+    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, all, by_edge, lmt_state_, 400,
+                                                               par, options_.progress);
     // the faces solved by the program leave the LP; their edges shared with other faces become rows "= 1";
     // the LP keeps the triangles without an impossible edge in the other faces
     std::vector<internal::Lp_triangle> out;
-    for(int t : dp.dp_triangles()) {
-      fixed_.push_back(all.vertices(t));
+    fixed_.resize(dp.dp_triangles().size());
+    par.for_blocks(fixed_.size(), 1 << 14, [&](std::size_t k0, std::size_t k1, std::size_t) {
+      for(std::size_t k = k0; k < k1; ++k) fixed_[k] = all.vertices(dp.dp_triangles()[k]);
+    });
+    for(int t : dp.dp_triangles())
       for(int i = 0; i < 3; ++i) row_one_[all.edge(t, i)] = fixed_edge_[all.edge(t, i)] = 1;
-    }
-    for(std::size_t t = 0; t < all.size(); ++t)
-      if(dp.is_live(int(t)) && !dp.in_solved_face(int(t))) out.push_back(all.triangle(int(t)));
+    par.append_in_order(all.size(), 1 << 14, out,
+                        [&](std::size_t t0, std::size_t t1, std::vector<internal::Lp_triangle>& o) {
+                          for(std::size_t t = t0; t < t1; ++t)
+                            if(dp.is_live(int(t)) && !dp.in_solved_face(int(t))) o.push_back(all.triangle(int(t)));
+                        });
     stats_.lmt_faces = dp.number_of_faces();
     stats_.lmt_solved_faces = dp.number_of_solved_faces();
     stats_.dp_triangles = dp.dp_triangles().size();
@@ -569,10 +577,11 @@ private:
       if(x[j] > 0.5 || lo[j] <= tau) Z.push_back(triangles_[j]);
     // the LMT-skeleton on the triangles of Z: an MWT inside Z is locally minimal with triangles of Z
     const internal::Triangle_set Zs(edges_, Z);
-    const internal::Edge_triangles by_edge(Zs, edges_.size());
+    const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_certificate);
+    const internal::Edge_triangles by_edge(Zs, edges_.size(), par);
     std::function<bool(const char*, double)> progress = options_.progress;
-    const std::vector<char> state = internal::lmt_skeleton(pts_, edges_, Zs, by_edge, is_hull_, progress);
-    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, Zs, by_edge, state);
+    const std::vector<char> state = internal::lmt_skeleton(pts_, edges_, Zs, by_edge, is_hull_, progress, par);
+    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, Zs, by_edge, state, 400, par);
     if(dp.number_of_solved_faces() + 1 != dp.number_of_faces()) return 0;   // all but the outer face
     std::vector<internal::Length_segment> A, B;
     std::vector<std::pair<int, int>> ea, eb;

@@ -81,16 +81,23 @@ public:
   }
   std::array<int, 3> vertices(int t) const { return {{vertex(t, 0), vertex(t, 1), vertex(t, 2)}}; }
   Lp_triangle triangle(int t) const { return Lp_triangle{vertices(t), e_[std::size_t(t)]}; }
-  /// Keeps the triangles t with keep(t) (in order) and releases the memory of the others.
+  /// Keeps the triangles t with keep(t) (in order) and releases the memory of the others (blocks in parallel).
   template <class Keep>
-  void compact(Keep keep)
+  void compact(Keep keep, const Parallel_stage& par = Parallel_stage())
   {
-    std::size_t count = 0;
-    for(std::size_t t = 0; t < e_.size(); ++t) count += keep(int(t)) ? 1 : 0;
+    const std::size_t block = 1 << 14;
+    std::vector<std::size_t> count((e_.size() + block - 1) / block, 0);
+    par.for_blocks(e_.size(), block, [&](std::size_t t0, std::size_t t1, std::size_t b) {
+      for(std::size_t t = t0; t < t1; ++t) count[b] += keep(int(t)) ? 1 : 0;
+    });
+    std::size_t total = 0;
+    for(std::size_t c : count) total += c;
     std::vector<std::array<int, 3>> kept;
-    kept.reserve(count);
-    for(std::size_t t = 0; t < e_.size(); ++t)
-      if(keep(int(t))) kept.push_back(e_[t]);
+    kept.reserve(total);
+    par.append_in_order(e_.size(), block, kept, [&](std::size_t t0, std::size_t t1, std::vector<std::array<int, 3>>& o) {
+      for(std::size_t t = t0; t < t1; ++t)
+        if(keep(int(t))) o.push_back(e_[t]);
+    });
     e_.swap(kept);
   }
 
