@@ -248,7 +248,7 @@ public:
     stats_.fractional_variables = fractional;
     r.lp_integral = fractional == 0;
     if(r.lp_integral) {
-      const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, chosen) : std::string();
+      const std::string err = validated(chosen);
       if(!err.empty()) {
         r.status = Mwt_status::solver_failed;
         r.message = "the integral LP solution is not a triangulation: " + err;
@@ -292,7 +292,7 @@ public:
     chosen = fixed_;
     for(std::size_t j = 0; j < mip.primal.size(); ++j)
       if(mip.primal[j] > 0.5) chosen.push_back(triangles_[j].v);
-    const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, chosen) : std::string();
+    const std::string err = validated(chosen);
     if(!err.empty()) {
       r.status = Mwt_status::solver_failed;
       r.message += "; the branch-and-bound solution is not a triangulation: " + err;
@@ -306,14 +306,9 @@ public:
   }
 
   /// Weight (sum of edge lengths) of a triangulation given by triangles; `upper` receives a rigorous upper bound.
+  /// The edges are summed in increasing order (the same sum for every thread count).
   double weight_of(const std::vector<std::array<int, 3>>& tri, double* upper = nullptr) const
   {
-    std::vector<std::pair<int, int>> e;
-    e.reserve(3 * tri.size());
-    for(const auto& t : tri)
-      for(int i = 0; i < 3; ++i) e.emplace_back(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
-    std::sort(e.begin(), e.end());
-    e.erase(std::unique(e.begin(), e.end()), e.end());
     if(options_.triangle_weight) {
       // The user's weights are taken as exact doubles; their interval sum bounds the rounding of the double sum
       // whatever the number of triangles (a fixed relative slack would not).
@@ -327,13 +322,29 @@ public:
       if(upper) *upper = I.value().sup();
       return s;
     }
+    // the edges (a < b) as rows per a, sorted and unique: in increasing order when read row by row
+    for(const auto& t : tri)
+      for(int v : t)
+        if(v < 0 || std::size_t(v) >= pts_.size()) throw std::invalid_argument("weight_of: vertex index out of range");
+    const internal::Parallel_stage par = par_.timed(&weight_loop_time_);
+    std::vector<std::size_t> start;
+    std::vector<int> other;
+    internal::build_sorted_rows(pts_.size(), tri.size(), [&](std::size_t k, auto&& add) {
+      for(int i = 0; i < 3; ++i) add(std::min(tri[k][i], tri[k][(i + 1) % 3]), std::max(tri[k][i], tri[k][(i + 1) % 3]));
+    }, true, start, other, par);
+    std::vector<int> first(other.size());   // the row of every entry
+    par.for_blocks(pts_.size(), 4096, [&](std::size_t a0, std::size_t a1, std::size_t) {
+      for(std::size_t a = a0; a < a1; ++a)
+        std::fill(first.begin() + std::ptrdiff_t(start[a]), first.begin() + std::ptrdiff_t(start[a + 1]), int(a));
+    });
+    std::vector<double> len(other.size());
+    const Interval I = blocked_interval_sum(other.size(), [&](std::size_t k) {
+      len[k] = length(first[k], other[k]);
+      return interval_length(first[k], other[k]);
+    }, par);
     double s = 0;
-    Blocked_interval_sum I;
-    for(const auto& ed : e) {
-      s += length(ed.first, ed.second);
-      I.add(interval_length(ed.first, ed.second));
-    }
-    if(upper) *upper = I.value().sup();
+    for(double l : len) s += l;   // in order: the sum of the sequential loop
+    if(upper) *upper = I.sup();
     return s;
   }
 
@@ -369,6 +380,8 @@ private:
 
   Mwt_result finish(Mwt_result& r)
   {
+    stats_.time_parallel_certificate += weight_loop_time_;
+    weight_loop_time_ = 0;
     stats_.time_total = stats_.time_setup + stats_.time_candidates + stats_.time_triangles + stats_.time_lmt + stats_.time_face_dp + stats_.time_lp_build + stats_.time_lp_solve +
                         stats_.time_certificate + stats_.time_branch_and_bound;
     r.statistics = stats_;
@@ -434,21 +447,51 @@ private:
     return out;
   }
 
+  // The value of a Blocked_interval_sum of term(0), ..., term(count - 1), its blocks of 4096 terms summed in
+  // parallel: the same additions in the same order, so the same interval for every thread count. term(k) may
+  // write per-term results (each k is called once).
+  template <class Term>
+  Interval blocked_interval_sum(std::size_t count, Term term, const internal::Parallel_stage& par) const
+  {
+    const std::size_t B = 4096, full = count / B;
+    std::vector<Interval> part(full + 1, Interval(0));
+    par.for_blocks(count, B, [&](std::size_t k0, std::size_t k1, std::size_t b) {
+      Interval sum(0);
+      for(std::size_t k = k0; k < k1; ++k) sum += term(k);
+      part[b] = sum;
+    });
+    Interval total(0);
+    for(std::size_t b = 0; b < full; ++b) total += part[b];
+    return total + (count % B != 0 ? part[full] : Interval(0));
+  }
+
+  // The exact validation (empty: valid, or not asked for), in parallel.
+  std::string validated(const std::vector<std::array<int, 3>>& tri)
+  {
+    if(!options_.validate) return std::string();
+    return internal::validate_triangulation(pts_, *grid_, hull_, tri, par_.timed(&stats_.time_parallel_certificate));
+  }
+
   // Lower bound (input units) of the weight of the edges of the fixed triangles that are no LP row.
-  double fixed_weight_lower_bound() const
+  double fixed_weight_lower_bound()
   {
     if(fixed_.empty()) return 0;
-    Blocked_interval_sum I;
-    for(std::size_t e = 0; e < edges_.size(); ++e)
-      if(fixed_edge_[e] && (row_of_edge_.empty() || row_of_edge_[e] < 0)) I.add(interval_length(edges_[e].first, edges_[e].second));
-    return I.value().inf();
+    const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_certificate);
+    std::vector<int> terms;   // the edges summed, in increasing order
+    par.append_in_order(edges_.size(), 1 << 16, terms, [&](std::size_t e0, std::size_t e1, std::vector<int>& out) {
+      for(std::size_t e = e0; e < e1; ++e)
+        if(fixed_edge_[e] && (row_of_edge_.empty() || row_of_edge_[e] < 0)) out.push_back(int(e));
+    });
+    return blocked_interval_sum(terms.size(), [&](std::size_t k) {
+      return interval_length(edges_[std::size_t(terms[k])].first, edges_[std::size_t(terms[k])].second);
+    }, par).inf();
   }
 
   // Every face solved by the dynamic program: no LP; the triangulation is validated exactly.
   Mwt_result solved_by_dynamic_program(Mwt_result& r)
   {
     const auto t0 = Stage_clock::now();
-    const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, fixed_) : std::string();
+    const std::string err = validated(fixed_);
     if(!err.empty()) {
       r.status = Mwt_status::solver_failed;
       r.message = "the dynamic program's triangles are not a triangulation (internal error): " + err;
@@ -577,7 +620,7 @@ private:
       if(x[j] > 0.5 || lo[j] <= tau) Z.push_back(triangles_[j]);
     // the LMT-skeleton on the triangles of Z: an MWT inside Z is locally minimal with triangles of Z
     const internal::Triangle_set Zs(edges_, Z);
-    const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_certificate);
+    const internal::Parallel_stage par = par_.timed(&weight_loop_time_);
     const internal::Edge_triangles by_edge(Zs, edges_.size(), par);
     std::function<bool(const char*, double)> progress = options_.progress;
     const std::vector<char> state = internal::lmt_skeleton(pts_, edges_, Zs, by_edge, is_hull_, progress, par);
@@ -625,6 +668,8 @@ private:
   std::vector<int> hull_;
   std::unique_ptr<internal::Point_grid_2> grid_;
   double scale_ = 1, upper_weight_ = 0;
+  // time in the parallel loops of the const member functions (weight_of, support_certificate), certificate stage
+  mutable double weight_loop_time_ = 0;
   bool triangles_done_ = false, lp_done_ = false;
   std::vector<Edge> edges_;
   std::unique_ptr<internal::Edge_index> index_;

@@ -18,6 +18,7 @@
 #include <CGAL/MDCS/progress.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <ctime>
@@ -106,6 +107,55 @@ private:
   std::size_t threads_;
   double* loop_time_;
 };
+
+/*!
+  Rows of integers, e.g. the neighbours of every vertex: `emit(k, add)` calls `add(row, value)` for the items of
+  input k in [0, count) (it is called twice per k: to count, then to place). Every row comes out sorted, and
+  without repeated values with `unique`; `start` has `rows + 1` offsets into `values`. Atomic counters, then a
+  sort per row: the same arrays for every thread count.
+*/
+template <class Emit>
+void build_sorted_rows(std::size_t rows, std::size_t count, Emit emit, bool unique, std::vector<std::size_t>& start,
+                       std::vector<int>& values, const Parallel_stage& par)
+{
+  const std::size_t item_block = 1 << 14, row_block = 1 << 14;
+  std::vector<std::atomic<std::size_t>> cursor(rows);   // zero (value-initialised)
+  par.for_blocks(count, item_block, [&](std::size_t k0, std::size_t k1, std::size_t) {
+    for(std::size_t k = k0; k < k1; ++k)
+      emit(k, [&](int row, int) { cursor[std::size_t(row)].fetch_add(1, std::memory_order_relaxed); });
+  });
+  start.assign(rows + 1, 0);
+  for(std::size_t r = 0; r < rows; ++r) {
+    start[r + 1] = start[r] + cursor[r].load(std::memory_order_relaxed);
+    cursor[r].store(0, std::memory_order_relaxed);
+  }
+  values.resize(start[rows]);
+  par.for_blocks(count, item_block, [&](std::size_t k0, std::size_t k1, std::size_t) {
+    for(std::size_t k = k0; k < k1; ++k)
+      emit(k, [&](int row, int value) {
+        values[start[std::size_t(row)] + cursor[std::size_t(row)].fetch_add(1, std::memory_order_relaxed)] = value;
+      });
+  });
+  std::vector<std::size_t> kept(unique ? rows : 0);
+  par.for_blocks(rows, row_block, [&](std::size_t r0, std::size_t r1, std::size_t) {
+    for(std::size_t r = r0; r < r1; ++r) {
+      const auto b = values.begin() + std::ptrdiff_t(start[r]), e = values.begin() + std::ptrdiff_t(start[r + 1]);
+      std::sort(b, e);
+      if(unique) kept[r] = std::size_t(std::unique(b, e) - b);
+    }
+  });
+  if(!unique) return;
+  std::vector<std::size_t> new_start(rows + 1, 0);
+  for(std::size_t r = 0; r < rows; ++r) new_start[r + 1] = new_start[r] + kept[r];
+  std::vector<int> new_values(new_start[rows]);
+  par.for_blocks(rows, row_block, [&](std::size_t r0, std::size_t r1, std::size_t) {
+    for(std::size_t r = r0; r < r1; ++r)
+      std::copy(values.begin() + std::ptrdiff_t(start[r]), values.begin() + std::ptrdiff_t(start[r] + kept[r]),
+                new_values.begin() + std::ptrdiff_t(new_start[r]));
+  });
+  start.swap(new_start);
+  values.swap(new_values);
+}
 
 } // namespace internal
 } // namespace Minimum_weight_triangulation_2
