@@ -214,7 +214,7 @@ TEST_CASE("parallel MWT: progress from the calling thread, cancellation in every
     const auto r = MWT::minimum_weight_triangulation_2<CGAL::Parallel_tag>(p, o);
     CHECK(r.status == MWT::Mwt_status::certified_optimal);
     CHECK_FALSE(other_thread);
-    for(const char* stage : {"candidate edges", "empty triangles", "LMT-skeleton", "face dynamic program"}) {
+    for(const char* stage : {"candidate edges", "empty triangles", "LMT-skeleton", "face dynamic program", "certificate"}) {
       INFO(stage << ", threads " << threads);
       REQUIRE(seen.count(stage) == 1);
       const std::vector<double>& f = seen[stage];
@@ -223,7 +223,7 @@ TEST_CASE("parallel MWT: progress from the calling thread, cancellation in every
       CHECK(std::is_sorted(f.begin(), f.end()));
     }
     // cancelled inside each stage (the first report strictly between 0 and 1, or at its start otherwise)
-    for(const std::string stage : {"candidate edges", "empty triangles", "LMT-skeleton", "face dynamic program"}) {
+    for(const std::string stage : {"candidate edges", "empty triangles", "LMT-skeleton", "face dynamic program", "certificate"}) {
       INFO("cancel in " << stage << ", threads " << threads);
       const bool inside = seen[stage].size() > 2;
       o.progress = [&](const char* s, double f) { return !(s == stage && (inside ? (f > 0 && f < 1) : true)); };
