@@ -232,6 +232,27 @@ TEST_CASE("parallel MWT: progress from the calling thread, cancellation in every
   }
 }
 
+TEST_CASE("parallel Hilbert order and stable sort: the sequential order for every thread count", "[mwt][parallel]")
+{
+  // 40,000 points: above the size where the Hilbert sort's first levels run in parallel (2^15)
+  std::vector<Point> p = uniform_points(40000, 37);
+  for(int i = 0; i < 2000; ++i) p.emplace_back(0.5, double(i) / 2000);   // equal x coordinates (ties of the splits)
+  const std::vector<int> sequential = MWT::internal::hilbert_order(p);
+  std::vector<int> by_x(p.size());
+  for(std::size_t i = 0; i < p.size(); ++i) by_x[i] = int(i);
+  auto less_x = [&](int a, int b) { return p[std::size_t(a)].x() < p[std::size_t(b)].x(); };   // many ties
+  std::vector<int> stable = by_x;
+  std::stable_sort(stable.begin(), stable.end(), less_x);
+  for(std::size_t threads : thread_counts) {
+    INFO("threads " << threads);
+    const MWT::internal::Parallel_stage par(threads);
+    CHECK(MWT::internal::hilbert_order(p, par) == sequential);
+    std::vector<int> v = by_x;
+    MWT::internal::parallel_stable_sort(v, less_x, par);
+    CHECK(v == stable);
+  }
+}
+
 TEST_CASE("parallel validation: the same verdicts for every thread count", "[mwt][parallel]")
 {
   const auto p = uniform_points(2000, 35);

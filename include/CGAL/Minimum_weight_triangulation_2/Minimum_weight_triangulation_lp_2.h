@@ -82,7 +82,7 @@ private:
     if(!options_.progress) options_.progress = [](const char*, double) { return true; };
     par_ = internal::Parallel_stage(CGAL::MDCS::effective_threads<ConcurrencyTag>(options_.threads));
     stats_.threads = par_.threads();
-    hull_ = internal::checked_hull_boundary(pts_);
+    hull_ = internal::checked_hull_boundary(pts_, par_.timed(&stats_.time_parallel_setup));
     grid_.reset(new internal::Point_grid_2(pts_, 2.0));
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
     for(std::size_t i = 0; i < pts_.size(); ++i) {
@@ -190,7 +190,9 @@ public:
          !fixed_edge_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])])
         throw std::runtime_error("minimum_weight_triangulation_2: a hull edge has no empty triangle (internal error)");
     edge_length_.resize(edges_.size());
-    for(std::size_t e = 0; e < edges_.size(); ++e) edge_length_[e] = length(edges_[e].first, edges_[e].second);
+    par_.for_blocks(edges_.size(), 1 << 16, [&](std::size_t e0, std::size_t e1, std::size_t) {
+      for(std::size_t e = e0; e < e1; ++e) edge_length_[e] = length(edges_[e].first, edges_[e].second);
+    });
     for(const auto& t : triangles_) {
       int rows[3];
       double val[3];

@@ -73,10 +73,12 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   const auto t0 = std::chrono::steady_clock::now();
 #endif
   std::vector<Point_2> p;
+  double sort_parallel_time = 0;
   {
     const std::vector<Point_2> input(std::begin(points), std::end(points));
     try {
-      order = internal::hilbert_order(input);
+      const internal::Parallel_stage par(CGAL::MDCS::effective_threads<ConcurrencyTag>(options.threads), &sort_parallel_time);
+      order = internal::hilbert_order(input, par);
     } catch(const std::invalid_argument&) {
       internal::Indexed_points_2<Kernel> ip(input);
       internal::checked_hull_boundary(ip);   // throws with the input indices
@@ -106,6 +108,7 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   for(auto& t : r.triangles)
     for(int& v : t) v = order[std::size_t(v)];
   r.statistics.time_setup += sort_time;
+  r.statistics.time_parallel_setup += sort_parallel_time;
   r.statistics.time_total += sort_time;
   return r;
 }

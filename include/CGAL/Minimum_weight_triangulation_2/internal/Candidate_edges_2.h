@@ -32,9 +32,10 @@ namespace internal {
 typedef std::pair<int, int> Edge;   // first < second
 
 /// Throws std::invalid_argument on fewer than 3 points, non-finite coordinates, duplicates, all collinear.
-/// Returns the convex hull boundary, counter-clockwise, including collinear boundary points.
+/// Returns the convex hull boundary, counter-clockwise, including collinear boundary points. The points are
+/// sorted in parallel (`par`; a stable sort, so the same order for every thread count).
 template <class P>
-std::vector<int> checked_hull_boundary(const P& pts)
+std::vector<int> checked_hull_boundary(const P& pts, const Parallel_stage& par = Parallel_stage())
 {
   const int n = int(pts.size());
   if(n < 3) throw std::invalid_argument("minimum_weight_triangulation_2: needs at least 3 points, got " + std::to_string(n));
@@ -47,7 +48,7 @@ std::vector<int> checked_hull_boundary(const P& pts)
     const auto &A = pts.point(a), &B = pts.point(b);
     return A.x() < B.x() || (A.x() == B.x() && A.y() < B.y());
   };
-  std::sort(order.begin(), order.end(), less);
+  parallel_stable_sort(order, less, par);
   for(int i = 1; i < n; ++i)
     if(!less(order[i - 1], order[i]))
       throw std::invalid_argument("minimum_weight_triangulation_2: duplicate points " + std::to_string(order[i - 1]) +

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
@@ -117,24 +118,37 @@ public:
     : Edge_index(edges, n, [](std::size_t) { return true; }, par)
   {}
 
-  /// The index of the edges i with keep(i) only (find() gives -1 for the others). The rows are sorted in
-  /// parallel (`par`); the filling stays sequential (it writes every row).
+  /// The index of the edges i with keep(i) only (find() gives -1 for the others). Built in parallel (`par`):
+  /// atomic counts and places, then every row sorted (its neighbours are distinct, so the rows do not depend on
+  /// the thread count).
   template <class Keep>
   Edge_index(const std::vector<Edge>& edges, std::size_t n, Keep keep, const Parallel_stage& par = Parallel_stage())
     : start_(n + 1, 0)
   {
     if(2 * edges.size() >= std::size_t(UINT32_MAX))
       throw std::length_error("minimum_weight_triangulation_2: too many candidate edges for 32-bit indices");
-    for(std::size_t i = 0; i < edges.size(); ++i)
-      if(keep(i)) { ++start_[std::size_t(edges[i].first) + 1]; ++start_[std::size_t(edges[i].second) + 1]; }
-    for(std::size_t v = 1; v <= n; ++v) start_[v] += start_[v - 1];
-    nbr_.resize(start_[n]);
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for(std::size_t i = 0; i < edges.size(); ++i) {
-      if(!keep(i)) continue;
-      nbr_[fill[std::size_t(edges[i].first)]++] = Entry{edges[i].second, int(i)};
-      nbr_[fill[std::size_t(edges[i].second)]++] = Entry{edges[i].first, int(i)};
+    const std::size_t edge_block = 1 << 14;
+    std::vector<std::atomic<std::uint32_t>> cursor(n);   // zero
+    par.for_blocks(edges.size(), edge_block, [&](std::size_t i0, std::size_t i1, std::size_t) {
+      for(std::size_t i = i0; i < i1; ++i)
+        if(keep(i)) {
+          cursor[std::size_t(edges[i].first)].fetch_add(1, std::memory_order_relaxed);
+          cursor[std::size_t(edges[i].second)].fetch_add(1, std::memory_order_relaxed);
+        }
+    });
+    for(std::size_t v = 0; v < n; ++v) {
+      start_[v + 1] = start_[v] + cursor[v].load(std::memory_order_relaxed);
+      cursor[v].store(0, std::memory_order_relaxed);
     }
+    nbr_.resize(start_[n]);
+    par.for_blocks(edges.size(), edge_block, [&](std::size_t i0, std::size_t i1, std::size_t) {
+      for(std::size_t i = i0; i < i1; ++i)
+        if(keep(i)) {
+          const std::size_t a = std::size_t(edges[i].first), b = std::size_t(edges[i].second);
+          nbr_[start_[a] + cursor[a].fetch_add(1, std::memory_order_relaxed)] = Entry{int(b), int(i)};
+          nbr_[start_[b] + cursor[b].fetch_add(1, std::memory_order_relaxed)] = Entry{int(a), int(i)};
+        }
+    });
     par.for_blocks(n, 4096, [&](std::size_t v0, std::size_t v1, std::size_t) {
       for(std::size_t v = v0; v < v1; ++v)
         std::sort(nbr_.begin() + std::ptrdiff_t(start_[v]), nbr_.begin() + std::ptrdiff_t(start_[v + 1]),

@@ -57,18 +57,13 @@ public:
       nbr_start_(std::size_t(n_) + 1, 0)
   {
     // certain neighbours of every vertex, counter-clockwise from angle 0 (flat arrays)
-    for(std::size_t e = 0; e < edges.size(); ++e)
-      if(state[e] == lmt_certain) { ++nbr_start_[std::size_t(edges[e].first) + 1]; ++nbr_start_[std::size_t(edges[e].second) + 1]; }
-    for(std::size_t v = 1; v < nbr_start_.size(); ++v) nbr_start_[v] += nbr_start_[v - 1];
-    nbr_.resize(nbr_start_.back());
-    {
-      std::vector<std::size_t> fill(nbr_start_.begin(), nbr_start_.end() - 1);
-      for(std::size_t e = 0; e < edges.size(); ++e)
-        if(state[e] == lmt_certain) {
-          nbr_[fill[std::size_t(edges[e].first)]++] = edges[e].second;
-          nbr_[fill[std::size_t(edges[e].second)]++] = edges[e].first;
-        }
-    }
+    // (rows of neighbours in parallel, then sorted by angle: the directions from a vertex are distinct)
+    build_sorted_rows(std::size_t(n_), edges.size(), [&](std::size_t e, auto&& add) {
+      if(state[e] == lmt_certain) {
+        add(edges[e].first, edges[e].second);
+        add(edges[e].second, edges[e].first);
+      }
+    }, false, nbr_start_, nbr_, par);
     par.for_blocks(std::size_t(n_), 4096, [&](std::size_t v0, std::size_t v1, std::size_t) {
       for(int v = int(v0); v < int(v1); ++v)
         std::sort(nbr_.begin() + std::ptrdiff_t(nbr_start_[v]), nbr_.begin() + std::ptrdiff_t(nbr_start_[v + 1]),

@@ -68,24 +68,14 @@ public:
   {
     if(3 * tri.size() >= std::size_t(UINT32_MAX))
       throw std::length_error("minimum_weight_triangulation_2: too many empty triangles for 32-bit indices");
-    if(par.parallel()) {
-      build_in_parallel(tri, m, par);
-      return;
-    }
-    for(std::size_t t = 0; t < tri.size(); ++t)
-      for(int i = 0; i < 3; ++i) ++start_[slot(tri.edge(int(t), i), tri.side(int(t), i)) + 1];
-    for(std::size_t k = 1; k < start_.size(); ++k) start_[k] += start_[k - 1];
-    item_.resize(start_.back());
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    for(std::size_t t = 0; t < tri.size(); ++t)
-      for(int i = 0; i < 3; ++i) item_[fill[slot(tri.edge(int(t), i), tri.side(int(t), i))]++] = int(t);
+    // atomic counts and places, then every list sorted: the arrays of a sequential fill, for every thread count
+    build(tri, m, par);
   }
   const int* begin(int e, int s) const { return item_.data() + start_[2 * std::size_t(e) + std::size_t(s)]; }
   const int* end(int e, int s) const { return item_.data() + start_[2 * std::size_t(e) + std::size_t(s) + 1]; }
 
 private:
-  // Counts and places with atomic counters, then sorts every list: the same arrays as the sequential fill.
-  void build_in_parallel(const Triangle_set& tri, std::size_t m, const Parallel_stage& par)
+  void build(const Triangle_set& tri, std::size_t m, const Parallel_stage& par)
   {
     const std::size_t T = tri.size(), slots = 2 * m;
     const std::size_t tri_block = 1 << 14, slot_block = 1 << 16;
@@ -179,8 +169,10 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
   {
     std::vector<int> round;   // the edges to test, increasing
     round.reserve(m);
-    for(std::size_t e = 0; e < m; ++e)
-      if(!is_hull[e]) round.push_back(int(e));
+    par.append_in_order(m, 1 << 16, round, [&](std::size_t e0, std::size_t e1, std::vector<int>& out) {
+      for(std::size_t e = e0; e < e1; ++e)
+        if(!is_hull[e]) out.push_back(int(e));
+    });
     std::vector<int> dead;
     std::vector<std::atomic<char>> queued(m);   // zero
     while(!round.empty()) {
@@ -210,8 +202,8 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
                 if(alive[f] && !is_hull[f] && !queued[f].exchange(1, std::memory_order_relaxed)) out.push_back(f);
               }
       });
-      if(next.size() < m / 32) {
-        std::sort(next.begin(), next.end());   // few: sorting is cheaper than a scan of every edge
+      if(next.size() < m / 1024) {
+        std::sort(next.begin(), next.end());   // few: sorting them is cheaper than a (parallel) scan of every edge
         for(int f : next) queued[f].store(0, std::memory_order_relaxed);
       } else {
         next.clear();

@@ -109,6 +109,33 @@ private:
 };
 
 /*!
+  Sorts `v` stably by `less` (the result is the unique stable order, the same for every thread count): blocks
+  sorted in parallel, then merged pairwise in rounds, the pairs of a round in parallel.
+*/
+template <class T, class Less>
+void parallel_stable_sort(std::vector<T>& v, Less less, const Parallel_stage& par)
+{
+  const std::size_t n = v.size(), block = 1 << 15;
+  if(!par.parallel() || n <= block) {
+    std::stable_sort(v.begin(), v.end(), less);
+    return;
+  }
+  par.for_blocks(n, block, [&](std::size_t b0, std::size_t b1, std::size_t) {
+    std::stable_sort(v.begin() + std::ptrdiff_t(b0), v.begin() + std::ptrdiff_t(b1), less);
+  });
+  std::vector<T> buffer(n);
+  for(std::size_t run = block; run < n; run *= 2) {
+    // merge the runs [k 2 run, k 2 run + run) and [k 2 run + run, (k + 1) 2 run)
+    par.for_blocks(n, 2 * run, [&](std::size_t b0, std::size_t b1, std::size_t) {
+      const std::size_t mid = (std::min)(b0 + run, b1);
+      std::merge(v.begin() + std::ptrdiff_t(b0), v.begin() + std::ptrdiff_t(mid), v.begin() + std::ptrdiff_t(mid),
+                 v.begin() + std::ptrdiff_t(b1), buffer.begin() + std::ptrdiff_t(b0), less);
+    });
+    v.swap(buffer);
+  }
+}
+
+/*!
   Rows of integers, e.g. the neighbours of every vertex: `emit(k, add)` calls `add(row, value)` for the items of
   input k in [0, count) (it is called twice per k: to count, then to place). Every row comes out sorted, and
   without repeated values with `unique`; `start` has `rows + 1` offsets into `values`. Atomic counters, then a
