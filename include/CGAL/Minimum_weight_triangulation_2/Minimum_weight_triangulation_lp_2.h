@@ -189,10 +189,6 @@ public:
       if(row_of_edge_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])] < 0 &&
          !fixed_edge_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])])
         throw std::runtime_error("minimum_weight_triangulation_2: a hull edge has no empty triangle (internal error)");
-    edge_length_.resize(edges_.size());
-    par_.for_blocks(edges_.size(), 1 << 16, [&](std::size_t e0, std::size_t e1, std::size_t) {
-      for(std::size_t e = e0; e < e1; ++e) edge_length_[e] = length(edges_[e].first, edges_[e].second);
-    });
     for(const auto& t : triangles_) {
       int rows[3];
       double val[3];
@@ -331,16 +327,16 @@ public:
         if(v < 0 || std::size_t(v) >= pts_.size()) throw std::invalid_argument("weight_of: vertex index out of range");
     const internal::Parallel_stage par = par_.timed(&weight_loop_time_);
     std::vector<std::size_t> start;
-    std::vector<int> other;
+    internal::Uninit_vector<int> other;
     internal::build_sorted_rows(pts_.size(), tri.size(), [&](std::size_t k, auto&& add) {
       for(int i = 0; i < 3; ++i) add(std::min(tri[k][i], tri[k][(i + 1) % 3]), std::max(tri[k][i], tri[k][(i + 1) % 3]));
     }, true, start, other, par);
-    std::vector<int> first(other.size());   // the row of every entry
+    internal::Uninit_vector<int> first(other.size());   // the row of every entry
     par.for_blocks(pts_.size(), 4096, [&](std::size_t a0, std::size_t a1, std::size_t) {
       for(std::size_t a = a0; a < a1; ++a)
         std::fill(first.begin() + std::ptrdiff_t(start[a]), first.begin() + std::ptrdiff_t(start[a + 1]), int(a));
     });
-    std::vector<double> len(other.size());
+    internal::Uninit_vector<double> len(other.size());
     const Interval I = blocked_interval_sum(other.size(), [&](std::size_t k) {
       len[k] = length(first[k], other[k]);
       return interval_length(first[k], other[k]);
@@ -559,7 +555,8 @@ private:
   {
     if(options_.triangle_weight) return user_weight(t.v[0], t.v[1], t.v[2]);
     double c = 0;
-    for(int i = 0; i < 3; ++i) c += (row_one_[t.edge[i]] ? 1.0 : 0.5) * edge_length_[t.edge[i]];
+    for(int i = 0; i < 3; ++i)
+      c += (row_one_[t.edge[i]] ? 1.0 : 0.5) * length(edges_[t.edge[i]].first, edges_[t.edge[i]].second);
     return c;
   }
 
@@ -695,7 +692,6 @@ private:
   std::vector<std::array<int, 3>> fixed_;
   std::vector<internal::Lp_triangle> triangles_;
   std::vector<int> row_of_edge_;
-  std::vector<double> edge_length_;
   Sparse_linear_program lp_;
   Mwt_statistics stats_;
 };

@@ -190,9 +190,9 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
   // of it, and the killing point's true angle within E of its computed one
   const double slack = 3 * fast_angle_error();
   const double kill_factor = 2 * std::cos(pi8) * (1 + 1e-6);   // 2 cos(pi/4.6) = 1.5505
-  std::vector<float> bound(std::size_t(n) * S);                 // per point and sector: max(left, right) kill radius
+  Uninit_vector<float> bound(std::size_t(n) * S);               // per point and sector: max(left, right) kill radius
   struct Pair { int p, q; unsigned char known; };               // known: bit 0 left occupied, bit 1 right occupied
-  std::vector<Pair> pairs;
+  Uninit_vector<Pair> pairs;
   pairs.reserve(std::size_t(n) * 24);
   struct Seen { int r; double th, d; };
   double bx0 = HUGE_VAL, by0 = HUGE_VAL, bx1 = -HUGE_VAL, by1 = -HUGE_VAL;
@@ -280,7 +280,7 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
   // pass 1 counts one step per point, pass 2 as many steps in all
   CGAL::MDCS::Parallel_progress<Progress> report(progress, "candidate edges", 2 * std::size_t(n));
   // pass 1 on a block of points [p0, p1): a workspace per block (a few kB)
-  auto search_block = [&](std::size_t p0, std::size_t p1, std::vector<Pair>& block_pairs) {
+  auto search_block = [&](std::size_t p0, std::size_t p1, Uninit_vector<Pair>& block_pairs) {
     if(report.cancelled()) return;
     std::vector<double> kl(S), kr(S), far(S), kle(S + 2 * X), kre(S + 2 * X);
     std::vector<Seen> seen;

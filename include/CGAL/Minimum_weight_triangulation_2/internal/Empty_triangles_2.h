@@ -43,7 +43,7 @@ class Triangle_set
 public:
   explicit Triangle_set(const std::vector<Edge>& edges) : edges_(&edges) {}
   /// Takes the triangles (three edge indices each, as edges(t)) over.
-  Triangle_set(const std::vector<Edge>& edges, std::vector<std::array<int, 3>>&& by_edges)
+  Triangle_set(const std::vector<Edge>& edges, Uninit_vector<std::array<int, 3>>&& by_edges)
     : edges_(&edges), e_(std::move(by_edges))
   {}
   Triangle_set(const std::vector<Edge>& edges, const std::vector<Lp_triangle>& tri) : edges_(&edges)
@@ -93,9 +93,9 @@ public:
     });
     std::size_t total = 0;
     for(std::size_t c : count) total += c;
-    std::vector<std::array<int, 3>> kept;
+    Uninit_vector<std::array<int, 3>> kept;
     kept.reserve(total);
-    par.append_in_order(e_.size(), block, kept, [&](std::size_t t0, std::size_t t1, std::vector<std::array<int, 3>>& o) {
+    par.append_in_order(e_.size(), block, kept, [&](std::size_t t0, std::size_t t1, Uninit_vector<std::array<int, 3>>& o) {
       for(std::size_t t = t0; t < t1; ++t)
         if(keep(int(t))) o.push_back(e_[t]);
     });
@@ -104,7 +104,7 @@ public:
 
 private:
   const std::vector<Edge>* edges_;
-  std::vector<std::array<int, 3>> e_;
+  Uninit_vector<std::array<int, 3>> e_;
 };
 
 /// The candidate edges as a compressed adjacency: for every vertex its neighbours in increasing order with the
@@ -128,7 +128,7 @@ public:
     if(2 * edges.size() >= std::size_t(UINT32_MAX))
       throw std::length_error("minimum_weight_triangulation_2: too many candidate edges for 32-bit indices");
     const std::size_t edge_block = 1 << 14;
-    std::vector<std::atomic<std::uint32_t>> cursor(n);   // zero
+    const std::unique_ptr<std::atomic<std::uint32_t>[]> cursor = zeroed_counters<std::uint32_t>(n, par);
     par.for_blocks(edges.size(), edge_block, [&](std::size_t i0, std::size_t i1, std::size_t) {
       for(std::size_t i = i0; i < i1; ++i)
         if(keep(i)) {
@@ -172,7 +172,7 @@ public:
 
 private:
   std::vector<std::uint32_t> start_;   // 32 bits: half the memory of size_t (at most 2^32 - 1 entries, checked)
-  std::vector<Entry> nbr_;
+  Uninit_vector<Entry> nbr_;
 };
 
 /// Every empty triangle whose sides are candidate edges (exact orientations), by edges (`edges`: the
@@ -185,10 +185,10 @@ Triangle_set empty_triangles(const P& pts, const Point_grid_2& grid, const Edge_
 {
   typedef std::array<int, 3> By_edges;
   const int n = int(pts.size());
-  std::vector<By_edges> out;
+  Uninit_vector<By_edges> out;
   out.reserve(index.degree_sum() / 2 * 27 / 10 + 16);   // about 2.6 triangles per edge on uniform points
   CGAL::MDCS::Parallel_progress<Progress> report(progress, "empty triangles", std::size_t(n));
-  par.append_in_order(std::size_t(n), 512, out, [&](std::size_t a0, std::size_t a1, std::vector<By_edges>& block_out) {
+  par.append_in_order(std::size_t(n), 512, out, [&](std::size_t a0, std::size_t a1, Uninit_vector<By_edges>& block_out) {
     if(report.cancelled()) return;
     for(int a = int(a0); a < int(a1); ++a) {
       const Edge_index::Entry* const a_end = index.end(a);

@@ -207,8 +207,8 @@ private:
   void trace_faces(const Parallel_stage& par)
   {
     const std::size_t H = nbr_.size(), block = 1 << 14;
-    std::vector<std::size_t> next(H);
-    std::vector<int> source(H);
+    Uninit_vector<std::size_t> next(H);   // written below for every half-edge
+    Uninit_vector<int> source(H);
     par.for_blocks(std::size_t(n_), 4096, [&](std::size_t u0, std::size_t u1, std::size_t) {
       for(std::size_t u = u0; u < u1; ++u)
         for(std::size_t h = nbr_start_[u]; h < nbr_start_[u + 1]; ++h) {
@@ -511,7 +511,8 @@ private:
   int n_;
   const Edge_triangles& by_edge_;
   std::vector<std::size_t> nbr_start_;
-  std::vector<int> nbr_, half_face_;
+  Uninit_vector<int> nbr_;
+  std::vector<int> half_face_;
   std::vector<std::vector<int>> faces_;
   std::vector<char> solved_;
   std::vector<int> dp_tri_;

@@ -64,7 +64,7 @@ class Edge_triangles
 {
 public:
   Edge_triangles(const Triangle_set& tri, std::size_t m, const Parallel_stage& par = Parallel_stage())
-    : start_(2 * m + 1, 0)
+    : start_(2 * m + 1)
   {
     if(3 * tri.size() >= std::size_t(UINT32_MAX))
       throw std::length_error("minimum_weight_triangulation_2: too many empty triangles for 32-bit indices");
@@ -79,7 +79,7 @@ private:
   {
     const std::size_t T = tri.size(), slots = 2 * m;
     const std::size_t tri_block = 1 << 14, slot_block = 1 << 16;
-    std::vector<std::atomic<std::uint32_t>> count(slots);   // zero (value-initialised)
+    const std::unique_ptr<std::atomic<std::uint32_t>[]> count = zeroed_counters<std::uint32_t>(slots, par);
     par.for_blocks(T, tri_block, [&](std::size_t t0, std::size_t t1, std::size_t) {
       for(std::size_t t = t0; t < t1; ++t)
         for(int i = 0; i < 3; ++i)
@@ -103,7 +103,7 @@ private:
       }
     });
     start_[slots] = block_sum[nb];
-    item_.resize(start_[slots]);
+    item_.resize(start_[slots]);   // not initialised: every entry is placed below
     par.for_blocks(T, tri_block, [&](std::size_t t0, std::size_t t1, std::size_t) {
       for(std::size_t t = t0; t < t1; ++t)
         for(int i = 0; i < 3; ++i) {
@@ -118,8 +118,8 @@ private:
   }
 
   static std::size_t slot(int e, int side) { return 2 * std::size_t(e) + (side > 0 ? 0 : 1); }
-  std::vector<std::uint32_t> start_;
-  std::vector<int> item_;
+  Uninit_vector<std::uint32_t> start_;   // every entry written by the prefix sums
+  Uninit_vector<int> item_;
 };
 
 /*!
@@ -139,7 +139,10 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
                                const Parallel_stage& par = Parallel_stage())
 {
   const std::size_t m = edges.size();
-  std::vector<char> alive(m, 1);
+  Uninit_vector<char> alive(m);
+  par.for_blocks(m, 1 << 16, [&](std::size_t e0, std::size_t e1, std::size_t) {
+    std::fill(alive.begin() + std::ptrdiff_t(e0), alive.begin() + std::ptrdiff_t(e1), char(1));
+  });
   auto tri_alive = [&](int t) {
     const auto& te = tri.edges(t);
     return alive[te[0]] && alive[te[1]] && alive[te[2]];
@@ -167,18 +170,18 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
   CGAL::MDCS::Parallel_progress<Progress> report(progress, "LMT-skeleton", m);
   const std::size_t test_block = 2048;
   {
-    std::vector<int> round;   // the edges to test, increasing
+    Uninit_vector<int> round;   // the edges to test, increasing
     round.reserve(m);
-    par.append_in_order(m, 1 << 16, round, [&](std::size_t e0, std::size_t e1, std::vector<int>& out) {
+    par.append_in_order(m, 1 << 16, round, [&](std::size_t e0, std::size_t e1, Uninit_vector<int>& out) {
       for(std::size_t e = e0; e < e1; ++e)
         if(!is_hull[e]) out.push_back(int(e));
     });
-    std::vector<int> dead;
-    std::vector<std::atomic<char>> queued(m);   // zero
+    Uninit_vector<int> dead;
+    const std::unique_ptr<std::atomic<char>[]> queued = zeroed_counters<char>(m, par);
     while(!round.empty()) {
       // 1. tests against the live edges at the start of the round (nothing is written to `alive` meanwhile)
       dead.clear();
-      par.append_in_order(round.size(), test_block, dead, [&](std::size_t k0, std::size_t k1, std::vector<int>& out) {
+      par.append_in_order(round.size(), test_block, dead, [&](std::size_t k0, std::size_t k1, Uninit_vector<int>& out) {
         if(report.cancelled()) return;
         std::vector<int> right_apex;
         for(std::size_t k = k0; k < k1; ++k)
@@ -186,14 +189,14 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
         report.advance(k1 - k0);
       });
       if(report.cancelled()) report.finish();   // throws
-      std::vector<int>().swap(round);
+      Uninit_vector<int>().swap(round);
       // 2. the edges without witness die together
       par.for_blocks(dead.size(), 1 << 14, [&](std::size_t k0, std::size_t k1, std::size_t) {
         for(std::size_t k = k0; k < k1; ++k) alive[std::size_t(dead[k])] = 0;
       });
       // 3. the next round: the live interior edges of their triangles, each once, increasing
-      std::vector<int> next;
-      par.append_in_order(dead.size(), test_block, next, [&](std::size_t k0, std::size_t k1, std::vector<int>& out) {
+      Uninit_vector<int> next;
+      par.append_in_order(dead.size(), test_block, next, [&](std::size_t k0, std::size_t k1, Uninit_vector<int>& out) {
         for(std::size_t k = k0; k < k1; ++k)
           for(int s = 0; s < 2; ++s)
             for(const int* tp = by_edge.begin(dead[k], s); tp != by_edge.end(dead[k], s); ++tp)
@@ -207,7 +210,7 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
         for(int f : next) queued[f].store(0, std::memory_order_relaxed);
       } else {
         next.clear();
-        par.append_in_order(m, 1 << 16, next, [&](std::size_t e0, std::size_t e1, std::vector<int>& out) {
+        par.append_in_order(m, 1 << 16, next, [&](std::size_t e0, std::size_t e1, Uninit_vector<int>& out) {
           for(std::size_t e = e0; e < e1; ++e)
             if(queued[e].load(std::memory_order_relaxed)) {
               queued[e].store(0, std::memory_order_relaxed);
@@ -239,9 +242,9 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
   // cell lists as a compressed array (count, then fill; atomic counters, the order inside a cell is free)
   const std::size_t cells = std::size_t(G) * G, edge_block = 1 << 14;
   std::vector<std::size_t> cell_start(cells + 1, 0);
-  std::vector<int> cell_item;
+  Uninit_vector<int> cell_item;
   {
-    std::vector<std::atomic<std::uint32_t>> cell_count(cells);
+    const std::unique_ptr<std::atomic<std::uint32_t>[]> cell_count = zeroed_counters<std::uint32_t>(cells, par);
     auto for_cells = [&](std::size_t e, bool fill) {
       int i0, i1, j0, j1;
       box(int(e), i0, i1, j0, j1);
@@ -268,7 +271,7 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
   }
   // Each pair of edges is tested once by each of them, in one cell only: the lowest cell of the intersection of
   // their cell ranges (no per-edge stamps). A crossing marks both edges; an edge already marked is skipped.
-  std::vector<std::atomic<char>> crossed(m);   // zero
+  const std::unique_ptr<std::atomic<char>[]> crossed = zeroed_counters<char>(m, par);
   par.for_blocks(m, edge_block, [&](std::size_t e0, std::size_t e1, std::size_t) {
     for(std::size_t e = e0; e < e1; ++e) {
       if(!alive[e] || crossed[e].load(std::memory_order_relaxed)) continue;

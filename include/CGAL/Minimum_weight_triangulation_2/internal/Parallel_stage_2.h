@@ -22,6 +22,10 @@
 #include <chrono>
 #include <cstddef>
 #include <ctime>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -38,6 +42,35 @@ inline double stage_clock_seconds()
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 #endif
 }
+
+/*!
+  An allocator whose `resize()` leaves new elements of trivial types uninitialised. The large arrays of the
+  pipeline (hundreds of bytes per point) are then first written, and their pages first touched (and zeroed by
+  the kernel), inside parallel loops instead of by a serial value-initialisation in the calling thread.
+*/
+template <class T>
+struct Default_init_allocator : std::allocator<T>
+{
+  template <class U>
+  struct rebind { typedef Default_init_allocator<U> other; };
+  Default_init_allocator() = default;
+  template <class U>
+  Default_init_allocator(const Default_init_allocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
+  {
+    ::new(static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new(static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+/// A vector whose resize() does not initialise (see Default_init_allocator).
+template <class T>
+using Uninit_vector = std::vector<T, Default_init_allocator<T>>;
 
 /*!
   The thread count of a run and the clock of its parallel loops. `loop_time`, when given, receives the
@@ -69,11 +102,13 @@ public:
   /*!
     produce(begin, end, out) appends the results of the items [begin, end) to `out` (a vector of its own per
     block); the blocks' vectors are appended to `result` in block order, a window of blocks at a time so that
-    the blocks' copies never hold more than one window (the outputs can be gigabytes: the empty triangles).
-    The result is the sequential loop's for every thread count.
+    the blocks' copies never hold more than one window (the outputs can be gigabytes: the empty triangles),
+    each block copying its own part in parallel (with an Uninit_vector result, nothing is written serially).
+    The result is the sequential loop's for every thread count. Reserve `result` beforehand when its size is
+    known roughly (growing it copies it).
   */
-  template <class T, class Produce>
-  void append_in_order(std::size_t n, std::size_t block, std::vector<T>& result, Produce produce) const
+  template <class T, class Alloc, class Produce>
+  void append_in_order(std::size_t n, std::size_t block, std::vector<T, Alloc>& result, Produce produce) const
   {
     if(block == 0)
       block = 1;
@@ -88,18 +123,22 @@ public:
       return;
     }
     const std::size_t window = (std::max)(std::size_t(256), 16 * threads_);
-    std::vector<std::vector<T>> out;
+    std::vector<std::vector<T, Alloc>> out;
+    std::vector<std::size_t> offset;
     for(std::size_t w0 = 0; w0 < blocks; w0 += window) {
       const std::size_t w1 = (std::min)(blocks, w0 + window);
-      out.assign(w1 - w0, std::vector<T>());
+      out.assign(w1 - w0, std::vector<T, Alloc>());
       for_blocks((w1 - w0) * block, block, [&](std::size_t, std::size_t, std::size_t k) {
         const std::size_t b = w0 + k;
         produce(b * block, (std::min)(n, (b + 1) * block), out[k]);
       });
-      for(std::vector<T>& v : out) {
-        result.insert(result.end(), v.begin(), v.end());
-        std::vector<T>().swap(v);
-      }
+      offset.assign(out.size() + 1, result.size());
+      for(std::size_t k = 0; k < out.size(); ++k) offset[k + 1] = offset[k] + out[k].size();
+      result.resize(offset.back());
+      for_blocks(out.size(), 1, [&](std::size_t k, std::size_t, std::size_t) {
+        std::copy(out[k].begin(), out[k].end(), result.begin() + std::ptrdiff_t(offset[k]));
+        std::vector<T, Alloc>().swap(out[k]);
+      });
     }
   }
 
@@ -135,18 +174,29 @@ void parallel_stable_sort(std::vector<T>& v, Less less, const Parallel_stage& pa
   }
 }
 
+/// `n` atomic counters set to zero in parallel (their pages first touched by the workers).
+template <class Count>
+std::unique_ptr<std::atomic<Count>[]> zeroed_counters(std::size_t n, const Parallel_stage& par)
+{
+  std::unique_ptr<std::atomic<Count>[]> c(new std::atomic<Count>[n]);
+  par.for_blocks(n, 1 << 16, [&](std::size_t k0, std::size_t k1, std::size_t) {
+    for(std::size_t k = k0; k < k1; ++k) c[k].store(0, std::memory_order_relaxed);
+  });
+  return c;
+}
+
 /*!
   Rows of integers, e.g. the neighbours of every vertex: `emit(k, add)` calls `add(row, value)` for the items of
   input k in [0, count) (it is called twice per k: to count, then to place). Every row comes out sorted, and
   without repeated values with `unique`; `start` has `rows + 1` offsets into `values`. Atomic counters, then a
   sort per row: the same arrays for every thread count.
 */
-template <class Emit>
+template <class Emit, class Values>
 void build_sorted_rows(std::size_t rows, std::size_t count, Emit emit, bool unique, std::vector<std::size_t>& start,
-                       std::vector<int>& values, const Parallel_stage& par)
+                       Values& values, const Parallel_stage& par)
 {
   const std::size_t item_block = 1 << 14, row_block = 1 << 14;
-  std::vector<std::atomic<std::size_t>> cursor(rows);   // zero (value-initialised)
+  const std::unique_ptr<std::atomic<std::size_t>[]> cursor = zeroed_counters<std::size_t>(rows, par);
   par.for_blocks(count, item_block, [&](std::size_t k0, std::size_t k1, std::size_t) {
     for(std::size_t k = k0; k < k1; ++k)
       emit(k, [&](int row, int) { cursor[std::size_t(row)].fetch_add(1, std::memory_order_relaxed); });
@@ -174,7 +224,7 @@ void build_sorted_rows(std::size_t rows, std::size_t count, Emit emit, bool uniq
   if(!unique) return;
   std::vector<std::size_t> new_start(rows + 1, 0);
   for(std::size_t r = 0; r < rows; ++r) new_start[r + 1] = new_start[r] + kept[r];
-  std::vector<int> new_values(new_start[rows]);
+  Values new_values(new_start[rows]);
   par.for_blocks(rows, row_block, [&](std::size_t r0, std::size_t r1, std::size_t) {
     for(std::size_t r = r0; r < r1; ++r)
       std::copy(values.begin() + std::ptrdiff_t(start[r]), values.begin() + std::ptrdiff_t(start[r] + kept[r]),

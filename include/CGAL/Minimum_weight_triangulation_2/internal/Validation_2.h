@@ -16,6 +16,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,7 @@ std::string validate_triangulation(const P& pts, const Point_grid_2& grid, const
   // 1. every triangle: indices, counter-clockwise, no input point inside or on an edge
   const std::size_t block = 4096, blocks = (tri.size() + block - 1) / block;
   std::vector<const char*> failure(blocks, nullptr);   // the first failure of each block
-  std::vector<std::atomic<char>> used(n);              // zero
+  const std::unique_ptr<std::atomic<char>[]> used = zeroed_counters<char>(n, par);
   par.for_blocks(tri.size(), block, [&](std::size_t t0, std::size_t t1, std::size_t b) {
     for(std::size_t k = t0; k < t1; ++k) {
       const std::array<int, 3>& t = tri[k];
@@ -71,7 +72,7 @@ std::string validate_triangulation(const P& pts, const Point_grid_2& grid, const
     if(f) return f;
   // 2. the directed edges a -> b, per source a, sorted
   std::vector<std::size_t> start;
-  std::vector<int> target;
+  Uninit_vector<int> target;
   build_sorted_rows(n, tri.size(), [&](std::size_t k, auto&& add) {
     for(int i = 0; i < 3; ++i) add(tri[k][i], tri[k][(i + 1) % 3]);
   }, false, start, target, par);
