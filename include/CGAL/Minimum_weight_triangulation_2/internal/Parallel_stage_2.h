@@ -155,7 +155,7 @@ template <class T, class Less>
 void parallel_stable_sort(std::vector<T>& v, Less less, const Parallel_stage& par)
 {
   const std::size_t n = v.size(), block = 1 << 15;
-  if(!par.parallel() || n <= block) {
+  if(n <= block) {
     std::stable_sort(v.begin(), v.end(), less);
     return;
   }
@@ -163,9 +163,11 @@ void parallel_stable_sort(std::vector<T>& v, Less less, const Parallel_stage& pa
     std::stable_sort(v.begin() + std::ptrdiff_t(b0), v.begin() + std::ptrdiff_t(b1), less);
   });
   std::vector<T> buffer(n);
+  // (the merges count as serial work in the statistics: the last rounds have few pairs)
+  const Parallel_stage merges = par.timed(nullptr);
   for(std::size_t run = block; run < n; run *= 2) {
     // merge the runs [k 2 run, k 2 run + run) and [k 2 run + run, (k + 1) 2 run)
-    par.for_blocks(n, 2 * run, [&](std::size_t b0, std::size_t b1, std::size_t) {
+    merges.for_blocks(n, 2 * run, [&](std::size_t b0, std::size_t b1, std::size_t) {
       const std::size_t mid = (std::min)(b0 + run, b1);
       std::merge(v.begin() + std::ptrdiff_t(b0), v.begin() + std::ptrdiff_t(mid), v.begin() + std::ptrdiff_t(mid),
                  v.begin() + std::ptrdiff_t(b1), buffer.begin() + std::ptrdiff_t(b0), less);
