@@ -141,7 +141,8 @@ bool thread_scaling(const std::vector<std::pair<std::string, std::vector<Point>>
                     const std::vector<std::size_t>& threads, int repeats, const std::string& base, double project_total)
 {
   bool all_identical = true;
-  mdcs_bench::Table runs({"input", "n", "threads", "repeat", "status", "weight", "digest", "stage", "wall_s", "cpu_s"});
+  mdcs_bench::Table runs({"input", "n", "threads", "repeat", "status", "weight", "digest", "stage", "wall_s", "cpu_s",
+                          "process_peak_MiB"});
   mdcs_bench::Table summary({"input", "n", "threads", "stage", "wall_s", "cpu_s", "speedup", "efficiency", "identical"});
   mdcs_bench::Table am({"input", "n", "stage", "cpu_1thread_s", "in_parallel_loops_s", "serial_s", "serial_fraction"});
   mdcs_bench::Table proj({"input", "n", "threads", "measured_wall_s", "measured_cpu_s", "amdahl_wall_s", "serial_fraction",
@@ -153,18 +154,21 @@ bool thread_scaling(const std::vector<std::pair<std::string, std::vector<Point>>
       for(std::size_t k = 0; k < threads.size(); ++k) {
         const std::size_t t = threads[r % 2 == 0 ? k : threads.size() - 1 - k];
         Run run = run_once(p, o, t);
-        std::fprintf(stderr, "%s n=%zu threads=%zu repeat %d: %s, %.3f s wall, %.3f s cpu\n", input.first.c_str(),
-                     p.size(), t, r, MWT::to_string(run.result.status), run.wall_total, run.cpu_total);
+        std::fprintf(stderr, "%s n=%zu threads=%zu repeat %d: %s, %.3f s wall, %.3f s cpu, process peak %.0f MiB\n",
+                     input.first.c_str(), p.size(), t, r, MWT::to_string(run.result.status), run.wall_total, run.cpu_total,
+                     run.peak_mib);
         char dg[32];
         std::snprintf(dg, sizeof dg, "%016llx", (unsigned long long)run.digest);
         for(const auto& st : stages())
           if(run.wall.count(st.first))
             runs.add_row({input.first, std::to_string(p.size()), std::to_string(t), std::to_string(r),
                           MWT::to_string(run.result.status), mdcs_bench::fmt(run.result.weight, "%.10f"), dg, st.second,
-                          mdcs_bench::fmt(run.wall[st.first], "%.4f"), mdcs_bench::fmt(run.cpu[st.first], "%.4f")});
+                          mdcs_bench::fmt(run.wall[st.first], "%.4f"), mdcs_bench::fmt(run.cpu[st.first], "%.4f"),
+                          mdcs_bench::fmt(run.peak_mib, "%.0f")});
         runs.add_row({input.first, std::to_string(p.size()), std::to_string(t), std::to_string(r),
                       MWT::to_string(run.result.status), mdcs_bench::fmt(run.result.weight, "%.10f"), dg, "total",
-                      mdcs_bench::fmt(run.wall_total, "%.4f"), mdcs_bench::fmt(run.cpu_total, "%.4f")});
+                      mdcs_bench::fmt(run.wall_total, "%.4f"), mdcs_bench::fmt(run.cpu_total, "%.4f"),
+                      mdcs_bench::fmt(run.peak_mib, "%.0f")});
         by_threads[t].push_back(std::move(run));
       }
     // identical results for every thread count and repeat

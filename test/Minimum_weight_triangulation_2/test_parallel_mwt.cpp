@@ -152,11 +152,11 @@ TEST_CASE("parallel MWT pipeline: the same result for 1, 2, 3 and 8 threads", "[
     CHECK(MWT::minimum_weight_triangulation_2<CGAL::Parallel_tag>(p, o).statistics.dp_exact_decisions > 0);
   }
   SECTION("even wheel: the centre is collinear with antipodal pairs") { check_all_thread_counts(wheel(40), o); }
-  SECTION("convex position: one face of 80 vertices (a long cycle of the face tracing)")
+  SECTION("80 points in convex position and one inside: a face of 80 vertices (a long cycle of the face tracing)")
   {
     std::mt19937 g(36);
     std::uniform_real_distribution<double> u(0, 2 * M_PI);
-    std::vector<Point> q;
+    std::vector<Point> q{Point(0.1, 0.05)};
     for(int i = 0; i < 80; ++i) {
       const double a = u(g);
       q.emplace_back(2 * std::cos(a), std::sin(a));
@@ -241,7 +241,8 @@ TEST_CASE("parallel Hilbert order and stable sort: the sequential order for ever
   typedef CGAL::Spatial_sort_traits_adapter_2<K, CGAL::Pointer_property_map<Point>::const_type> Traits;
   std::vector<int> sequential(p.size());
   for(std::size_t i = 0; i < p.size(); ++i) sequential[i] = int(i);
-  CGAL::Hilbert_sort_median_2<Traits, CGAL::Sequential_tag> cgal_sort(Traits(CGAL::make_property_map(p)));
+  const std::vector<Point>& cp = p;
+  CGAL::Hilbert_sort_median_2<Traits, CGAL::Sequential_tag> cgal_sort(Traits(CGAL::make_property_map(cp)));
   cgal_sort(sequential.begin(), sequential.end());
   CHECK(MWT::internal::hilbert_order(p) == sequential);
   std::vector<int> by_x(p.size());
