@@ -21,6 +21,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <stdexcept>
 #include <vector>
 
@@ -127,11 +128,16 @@ private:
   before `remove_unusable_triangles`), `by_edge` their lists per edge and side, `is_hull` flags hull edges
   (always certain).
 
-  The loop runs in rounds: every edge of the round is tested against the edges alive when the round starts
-  (blocks in parallel, `par`), the edges without witness die together, and the next round tests the live edges
-  of their triangles. Killing is monotone (fewer live edges never give an edge a witness back), so the rounds
-  end at the same skeleton as any other order of the tests: the largest set of edges that all have a witness
-  within it. The certain edges are then found in parallel over a grid of edge boxes.
+  Killing is monotone (fewer live edges never give an edge a witness back), so any order of the tests that
+  re-tests an edge after every death among the edges of its triangles ends at the same skeleton: the largest
+  set of edges that all keep a witness within it. In parallel (`par`) the edges are cut into fixed ranges of
+  2^14 indices, and the loop runs in rounds: in a round every range works through its queued edges with a work
+  list of its own, like the sequential loop (an edge of the range whose neighbour dies is tested again at once,
+  in cache); a death queues the live edges of its triangles that belong to other ranges for the next round,
+  which starts when every range is done. An edge is thus tested again after every death that its test may have
+  missed: the deaths of its own range are seen at once, those of other ranges (written concurrently, atomic
+  flags) by the next round's test. The skeleton is the same for every thread count; only the number of tests
+  varies. The certain edges are then found in parallel over a grid of edge boxes.
 */
 template <class P, class Progress>
 std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, const Triangle_set& tri,
@@ -139,13 +145,16 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
                                const Parallel_stage& par = Parallel_stage())
 {
   const std::size_t m = edges.size();
-  Uninit_vector<char> alive(m);
+  const std::unique_ptr<std::atomic<char>[]> alive_flag = zeroed_counters<char>(m, par);
   par.for_blocks(m, 1 << 16, [&](std::size_t e0, std::size_t e1, std::size_t) {
-    std::fill(alive.begin() + std::ptrdiff_t(e0), alive.begin() + std::ptrdiff_t(e1), char(1));
+    for(std::size_t e = e0; e < e1; ++e) alive_flag[e].store(1, std::memory_order_relaxed);
   });
+  // acquire/release: a test that reads a death happens after the test that decided it, so deaths never justify
+  // each other in a cycle (every death is justified by a state that actually existed)
+  auto alive = [&](std::size_t e) { return alive_flag[e].load(std::memory_order_acquire) != 0; };
   auto tri_alive = [&](int t) {
     const auto& te = tri.edges(t);
-    return alive[te[0]] && alive[te[1]] && alive[te[2]];
+    return alive(std::size_t(te[0])) && alive(std::size_t(te[1])) && alive(std::size_t(te[2]));
   };
   auto apex = [&](int t, int e) { return tri.apex(t, e); };
   // an interior edge keeps a witness: a live triangle on each side with a non-convex quadrilateral or |ab| <= |cd|
@@ -168,56 +177,59 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
     return false;
   };
   CGAL::MDCS::Parallel_progress<Progress> report(progress, "LMT-skeleton", m);
-  const std::size_t test_block = 2048;
+  const std::size_t range = 1 << 14, ranges = (m + range - 1) / range;
   {
-    Uninit_vector<int> round;   // the edges to test, increasing
+    Uninit_vector<int> round;   // the queued edges, increasing
     round.reserve(m);
     par.append_in_order(m, 1 << 16, round, [&](std::size_t e0, std::size_t e1, Uninit_vector<int>& out) {
       for(std::size_t e = e0; e < e1; ++e)
         if(!is_hull[e]) out.push_back(int(e));
     });
-    Uninit_vector<int> dead;
     const std::unique_ptr<std::atomic<char>[]> queued = zeroed_counters<char>(m, par);
     while(!round.empty()) {
-      // 1. tests against the live edges at the start of the round (nothing is written to `alive` meanwhile)
-      dead.clear();
-      par.append_in_order(round.size(), test_block, dead, [&](std::size_t k0, std::size_t k1, Uninit_vector<int>& out) {
+      // the next round: live interior edges of other ranges next to a death, each once
+      Uninit_vector<int> next;
+      par.append_in_order(ranges, 1, next, [&](std::size_t r, std::size_t, Uninit_vector<int>& out) {
         if(report.cancelled()) return;
+        const int lo = int(r * range), hi = int(std::min(m, (r + 1) * range));
+        auto first = std::lower_bound(round.begin(), round.end(), lo);
+        auto last = std::lower_bound(first, round.end(), hi);
+        if(first == last) return;
+        std::vector<int> work(std::make_reverse_iterator(last), std::make_reverse_iterator(first));   // increasing pops
+        std::vector<char> in_work(std::size_t(hi - lo), 0);
+        for(int e : work) in_work[std::size_t(e - lo)] = 1;
         std::vector<int> right_apex;
-        for(std::size_t k = k0; k < k1; ++k)
-          if(!has_witness(round[k], right_apex)) out.push_back(round[k]);
-        report.advance(k1 - k0);
+        std::size_t tests = 0;
+        while(!work.empty()) {
+          const int e = work.back();
+          work.pop_back();
+          in_work[std::size_t(e - lo)] = 0;
+          if(++tests == 1024) {   // progress (and cancellation) within a range, too
+            if(!report.advance(tests)) return;
+            tests = 0;
+          }
+          if(!alive(std::size_t(e)) || has_witness(e, right_apex)) continue;
+          alive_flag[std::size_t(e)].store(0, std::memory_order_release);
+          for(int s = 0; s < 2; ++s)
+            for(const int* tp = by_edge.begin(e, s); tp != by_edge.end(e, s); ++tp)
+              for(int i = 0; i < 3; ++i) {
+                const int f = tri.edge(*tp, i);
+                if(!alive(std::size_t(f)) || is_hull[f]) continue;
+                if(f >= lo && f < hi) {
+                  if(!in_work[std::size_t(f - lo)]) { in_work[std::size_t(f - lo)] = 1; work.push_back(f); }
+                } else if(!queued[f].exchange(1, std::memory_order_relaxed)) {
+                  out.push_back(f);
+                }
+              }
+        }
+        report.advance(tests);
       });
       if(report.cancelled()) report.finish();   // throws
       Uninit_vector<int>().swap(round);
-      // 2. the edges without witness die together
-      par.for_blocks(dead.size(), 1 << 14, [&](std::size_t k0, std::size_t k1, std::size_t) {
-        for(std::size_t k = k0; k < k1; ++k) alive[std::size_t(dead[k])] = 0;
+      std::sort(next.begin(), next.end());
+      par.for_blocks(next.size(), 1 << 16, [&](std::size_t k0, std::size_t k1, std::size_t) {
+        for(std::size_t k = k0; k < k1; ++k) queued[std::size_t(next[k])].store(0, std::memory_order_relaxed);
       });
-      // 3. the next round: the live interior edges of their triangles, each once, increasing
-      Uninit_vector<int> next;
-      par.append_in_order(dead.size(), test_block, next, [&](std::size_t k0, std::size_t k1, Uninit_vector<int>& out) {
-        for(std::size_t k = k0; k < k1; ++k)
-          for(int s = 0; s < 2; ++s)
-            for(const int* tp = by_edge.begin(dead[k], s); tp != by_edge.end(dead[k], s); ++tp)
-              for(int i = 0; i < 3; ++i) {
-                const int f = tri.edge(*tp, i);
-                if(alive[f] && !is_hull[f] && !queued[f].exchange(1, std::memory_order_relaxed)) out.push_back(f);
-              }
-      });
-      if(next.size() < m / 1024) {
-        std::sort(next.begin(), next.end());   // few: sorting them is cheaper than a (parallel) scan of every edge
-        for(int f : next) queued[f].store(0, std::memory_order_relaxed);
-      } else {
-        next.clear();
-        par.append_in_order(m, 1 << 16, next, [&](std::size_t e0, std::size_t e1, Uninit_vector<int>& out) {
-          for(std::size_t e = e0; e < e1; ++e)
-            if(queued[e].load(std::memory_order_relaxed)) {
-              queued[e].store(0, std::memory_order_relaxed);
-              out.push_back(int(e));
-            }
-        });
-      }
       round.swap(next);
     }
   }   // the work arrays are released before the crossing tests (memory peak of the pipeline)
@@ -231,9 +243,10 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
     ymin = std::min(ymin, pts.y(int(i))); ymax = std::max(ymax, pts.y(int(i)));
   }
   const int G = std::max(1, std::min(2048, int(std::sqrt(double(pts.size()) / 2.0))));
-  const double wx = std::max(xmax - xmin, 1e-300) / G, wy = std::max(ymax - ymin, 1e-300) / G;
-  auto cx = [&](double x) { return std::max(0, std::min(G - 1, int((x - xmin) / wx))); };
-  auto cy = [&](double y) { return std::max(0, std::min(G - 1, int((y - ymin) / wy))); };
+  // (cells by a multiplication: the same function for the buckets and the test cell of a pair)
+  const double iwx = G / std::max(xmax - xmin, 1e-300), iwy = G / std::max(ymax - ymin, 1e-300);
+  auto cx = [&](double x) { return std::max(0, std::min(G - 1, int((x - xmin) * iwx))); };
+  auto cy = [&](double y) { return std::max(0, std::min(G - 1, int((y - ymin) * iwy))); };
   auto box = [&](int e, int& i0, int& i1, int& j0, int& j1) {
     const int a = edges[e].first, b = edges[e].second;
     i0 = cx(std::min(pts.x(a), pts.x(b))); i1 = cx(std::max(pts.x(a), pts.x(b)));
@@ -257,7 +270,7 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
     };
     par.for_blocks(m, edge_block, [&](std::size_t e0, std::size_t e1, std::size_t) {
       for(std::size_t e = e0; e < e1; ++e)
-        if(alive[e]) for_cells(e, false);
+        if(alive(e)) for_cells(e, false);
     });
     for(std::size_t c = 0; c < cells; ++c) {
       cell_start[c + 1] = cell_start[c] + cell_count[c].load(std::memory_order_relaxed);
@@ -266,7 +279,7 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
     cell_item.resize(cell_start.back());
     par.for_blocks(m, edge_block, [&](std::size_t e0, std::size_t e1, std::size_t) {
       for(std::size_t e = e0; e < e1; ++e)
-        if(alive[e]) for_cells(e, true);
+        if(alive(e)) for_cells(e, true);
     });
   }
   // Each pair of edges is tested once by each of them, in one cell only: the lowest cell of the intersection of
@@ -274,7 +287,7 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
   const std::unique_ptr<std::atomic<char>[]> crossed = zeroed_counters<char>(m, par);
   par.for_blocks(m, edge_block, [&](std::size_t e0, std::size_t e1, std::size_t) {
     for(std::size_t e = e0; e < e1; ++e) {
-      if(!alive[e] || crossed[e].load(std::memory_order_relaxed)) continue;
+      if(!alive(e) || crossed[e].load(std::memory_order_relaxed)) continue;
       int i0, i1, j0, j1;
       box(int(e), i0, i1, j0, j1);
       const int a = edges[e].first, b = edges[e].second;
@@ -304,7 +317,7 @@ std::vector<char> lmt_skeleton(const P& pts, const std::vector<Edge>& edges, con
   par.for_blocks(m, 1 << 16, [&](std::size_t e0, std::size_t e1, std::size_t) {
     for(std::size_t e = e0; e < e1; ++e)
       if(is_hull[e]) state[e] = lmt_certain;
-      else if(alive[e]) state[e] = crossed[e].load(std::memory_order_relaxed) ? lmt_possible : lmt_certain;
+      else if(alive(e)) state[e] = crossed[e].load(std::memory_order_relaxed) ? lmt_possible : lmt_certain;
   });
   return state;
 }
