@@ -18,6 +18,13 @@
 //   --trace-memory: the peak resident set of every stage (the progress callback resets the kernel's peak
 //   counter, /proc/self/clear_refs, when a stage starts), printed and written to <csv>_memory.csv; peak_MiB is
 //   then the maximum over the stages (the kernel's own peak, and /usr/bin/time's, only cover the last stage).
+//   --threads T1,T2,..: thread scaling (issue 29) instead of the tables above: every size (uniform; clustered too
+//   without --uniform-only) with each thread count (CGAL::Parallel_if_available_tag, Mwt_options::threads),
+//   interleaved over the repeats; per stage wall-clock and processor seconds (between the progress callback's
+//   stage changes), medians, speed-up and efficiency against the first count, a check that every result is
+//   identical, the serial fraction of the one-thread runs and the Amdahl projection to 4, 8 and 16 threads
+//   (<csv>_threads*.csv). --project-total S: also project a one-thread total of S seconds (e.g. of 10^7 points)
+//   to 16 threads with that serial fraction. Exit code 1 when a result differs between thread counts.
 
 // stage times in processor time (std::clock): the benchmark machine may be shared
 #define MDCS_MWT_CPU_TIMERS 1
@@ -25,6 +32,7 @@
 #include <CGAL/Minimum_weight_triangulation_2.h>
 
 #include "mdcs_bench.h"
+#include "mwt_thread_scaling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,6 +87,8 @@ int main(int argc, char** argv)
   bool explicit_sizes = false;
   int repeats = 3, sets = 100, max_wheel = 41;
   std::string csv = "mwt.csv";
+  std::vector<std::size_t> thread_list;   // --threads: the thread-scaling mode
+  double project_total = 0;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--large") large = true;
@@ -91,6 +101,15 @@ int main(int argc, char** argv)
     else if(a == "--no-random") no_random = true;
     else if(a == "--trace-memory") trace_memory = true;
     else if(a == "--bb-limit" && i + 1 < argc) bb_limit = std::atof(argv[++i]);
+    else if(a == "--project-total" && i + 1 < argc) project_total = std::atof(argv[++i]);
+    else if(a == "--threads" && i + 1 < argc) {
+      std::string list = argv[++i];
+      for(std::size_t pos = 0; pos < list.size();) {
+        const std::size_t comma = list.find(',', pos);
+        thread_list.push_back(std::size_t(std::max(1, std::atoi(list.substr(pos, comma - pos).c_str()))));
+        pos = comma == std::string::npos ? list.size() : comma + 1;
+      }
+    }
     else if(a == "--sizes" && i + 1 < argc) {
       sizes.clear();
       explicit_sizes = true;
@@ -101,7 +120,21 @@ int main(int argc, char** argv)
         pos = comma == std::string::npos ? list.size() : comma + 1;
       }
     }
-    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R] [--sets S] [--max-wheel K] [--trace-memory] [--csv FILE]\n"); return 2; }
+    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R] [--sets S] [--max-wheel K] [--trace-memory] [--csv FILE] [--threads T1,T2,.. [--project-total S]]\n"); return 2; }
+  }
+  if(!thread_list.empty()) {
+    std::vector<std::pair<std::string, std::vector<Point>>> inputs;
+    for(int n : sizes) inputs.emplace_back("uniform", points("uniform", n, 1));
+    if(!uniform_only)
+      for(int n : sizes) inputs.emplace_back("clustered", points("clustered", n, 2));
+    MWT::Mwt_options o;
+    o.use_lmt_skeleton = lmt;
+    o.branch_and_bound_time_limit = bb_limit;
+    const auto dot = csv.rfind(".csv");
+    std::printf("thread scaling: %s, hardware threads %zu, TBB %s\n", lmt ? "LMT pipeline" : "LP path",
+                CGAL::MDCS::hardware_threads(), CGAL::MDCS::has_parallel_support() ? "linked" : "NOT linked (sequential)");
+    return mwt_scaling::thread_scaling(inputs, o, thread_list, repeats, dot == std::string::npos ? csv : csv.substr(0, dot),
+                                       project_total) ? 0 : 1;
   }
   mdcs_bench::Table table({"input", "n", "status", "weight", "LP_opt", "cand_edges", "edges_per_n", "triangles", "lp_cols",
                            "lp_rows", "t_setup", "t_candidates", "t_triangles", "t_lp_build", "t_lp_solve", "t_certificate",

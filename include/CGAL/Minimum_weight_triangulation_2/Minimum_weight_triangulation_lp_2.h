@@ -16,9 +16,12 @@
 #include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Face_dp_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Lmt_skeleton_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Parallel_stage_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Validation_2.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
@@ -41,12 +44,17 @@ namespace Minimum_weight_triangulation_2 {
 
   \tparam Kernel a CGAL kernel; with `Exact_predicates_inexact_constructions_kernel` every combinatorial
   decision (collinearity, emptiness, side of an edge, validation) is exact.
+  \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
+  `CGAL::Parallel_if_available_tag`: with a parallel tag and TBB, the candidate edges, the empty triangles, the
+  LMT-skeleton, the face programs and the validation run on `Mwt_options::threads` threads (0: all), over
+  blocks fixed by the input, so that every result is the same for every thread count. The LP and branch and
+  bound stay sequential.
 
   Usage: construct (checks the input, computes the hull), then `compute_candidate_edges()`,
   `compute_empty_triangles()`, `build_linear_program()`, `solve(solver)`; `minimum_weight_triangulation_2()`
   runs all of them. Every stage can be inspected (`candidate_edges()`, `linear_program()`, ...).
 */
-template <class Kernel>
+template <class Kernel, class ConcurrencyTag = CGAL::Sequential_tag>
 class Minimum_weight_triangulation_lp_2
 {
 public:
@@ -76,7 +84,9 @@ private:
   {
     const auto t0 = Stage_clock::now();
     if(!options_.progress) options_.progress = [](const char*, double) { return true; };
-    hull_ = internal::checked_hull_boundary(pts_);
+    par_ = internal::Parallel_stage(CGAL::MDCS::effective_threads<ConcurrencyTag>(options_.threads));
+    stats_.threads = par_.threads();
+    hull_ = internal::checked_hull_boundary(pts_, par_.timed(&stats_.time_parallel_setup));
     internal::check_coordinate_range(pts_);
     grid_.reset(new internal::Point_grid_2(pts_, 2.0));
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
@@ -172,11 +182,12 @@ public:
     const auto t0 = Stage_clock::now();
     if(options_.pruning == Pruning::diamond && (options_.metric != Edge_metric::L2 || options_.triangle_weight))
       throw std::invalid_argument("minimum_weight_triangulation_2: the diamond test is valid for the Euclidean metric only");
-    edges_ = uses_diamond_test() ? internal::diamond_candidate_edges(pts_, *grid_, options_.progress)
-                                 : internal::all_valid_edges(pts_, *grid_, options_.progress);
+    const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_candidates);
+    edges_ = uses_diamond_test() ? internal::diamond_candidate_edges(pts_, *grid_, options_.progress, par)
+                                 : internal::all_valid_edges(pts_, *grid_, options_.progress, par);
     // hull edges are always candidates (one side is empty); make sure of it
     index_.reset();
-    index_.reset(new internal::Edge_index(edges_, pts_.size()));
+    index_.reset(new internal::Edge_index(edges_, pts_.size(), par));
     const std::size_t found = edges_.size();
     for(std::size_t i = 0; i < hull_.size(); ++i) {
       const int a = hull_[i], b = hull_[(i + 1) % hull_.size()];
@@ -184,7 +195,7 @@ public:
     }
     if(edges_.size() != found) {
       index_.reset();
-      index_.reset(new internal::Edge_index(edges_, pts_.size()));
+      index_.reset(new internal::Edge_index(edges_, pts_.size(), par));
     }
     is_hull_.assign(edges_.size(), 0);
     for(std::size_t i = 0; i < hull_.size(); ++i) is_hull_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])] = 1;
@@ -199,7 +210,8 @@ public:
     internal::Triangle_set all = [&] {
       // a finer grid for the emptiness tests of small triangles (fewer points in a triangle's box), freed after
       internal::Point_grid_2 fine(pts_, 0.5);
-      return internal::empty_triangles(pts_, fine, *index_, edges_, options_.progress);
+      return internal::empty_triangles(pts_, fine, *index_, edges_, options_.progress,
+                                       par_.timed(&stats_.time_parallel_triangles));
     }();
     stats_.empty_triangles = all.size();
     stats_.time_triangles = since(t0);
@@ -227,7 +239,10 @@ public:
     if(!triangles_done_) compute_empty_triangles();
     const auto t0 = Stage_clock::now();
     lp_ = Sparse_linear_program();
-    row_of_edge_.assign(edges_.size(), -1);
+    row_of_edge_.resize(edges_.size());
+    par_.for_blocks(edges_.size(), 1 << 16, [&](std::size_t e0, std::size_t e1, std::size_t) {
+      std::fill(row_of_edge_.begin() + std::ptrdiff_t(e0), row_of_edge_.begin() + std::ptrdiff_t(e1), -1);
+    });
     row_is_hull_.clear();
     for(const auto& t : triangles_)
       for(int i = 0; i < 3; ++i) {
@@ -241,8 +256,6 @@ public:
       if(row_of_edge_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])] < 0 &&
          !fixed_edge_[index_->find(hull_[i], hull_[(i + 1) % hull_.size()])])
         throw std::runtime_error("minimum_weight_triangulation_2: a hull edge has no empty triangle (internal error)");
-    edge_length_.resize(edges_.size());
-    for(std::size_t e = 0; e < edges_.size(); ++e) edge_length_[e] = length(edges_[e].first, edges_[e].second);
     if(options_.triangle_weight) {
       // user weights of any magnitude: the LP sees them divided by the largest (CLP aborts on costs of 1e25)
       double largest = 0;
@@ -300,10 +313,11 @@ public:
       r.message = std::string("LP solver: ") + unusable + " (" + sol.message + ")";
       return finish(r);
     }
+    start_certificate_stage();
+    t0 = Stage_clock::now();
     const double fixed_part = fixed_weight_lower_bound();   // faces solved by the dynamic program
     r.lp_objective = checked_weight(sol.objective * scale_ + fixed_part);   // finite objective, overflow by the scale
     r.lp_exact = sol.exact;
-    t0 = Stage_clock::now();
     r.lower_bound = dual_lower_bound(sol.dual) + fixed_part;
     std::size_t fractional = 0;
     std::vector<std::array<int, 3>> chosen(fixed_);
@@ -315,7 +329,7 @@ public:
     stats_.fractional_variables = fractional;
     r.lp_integral = fractional == 0;
     if(r.lp_integral) {
-      const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, chosen) : std::string();
+      const std::string err = validated(chosen);
       if(!err.empty()) {
         r.status = Mwt_status::solver_failed;
         r.message = "the integral LP solution is not a triangulation: " + err;
@@ -366,7 +380,7 @@ public:
     chosen = fixed_;
     for(std::size_t j = 0; j < mip.primal.size(); ++j)
       if(mip.primal[j] > 0.5) chosen.push_back(triangles_[j].v);
-    const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, chosen) : std::string();
+    const std::string err = validated(chosen);
     if(!err.empty()) {
       r.status = Mwt_status::solver_failed;
       r.message += "; the branch-and-bound solution is not a triangulation: " + err;
@@ -380,14 +394,9 @@ public:
   }
 
   /// Weight (sum of edge lengths) of a triangulation given by triangles; `upper` receives a rigorous upper bound.
+  /// The edges are summed in increasing order (the same sum for every thread count).
   double weight_of(const std::vector<std::array<int, 3>>& tri, double* upper = nullptr) const
   {
-    std::vector<std::pair<int, int>> e;
-    e.reserve(3 * tri.size());
-    for(const auto& t : tri)
-      for(int i = 0; i < 3; ++i) e.emplace_back(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
-    std::sort(e.begin(), e.end());
-    e.erase(std::unique(e.begin(), e.end()), e.end());
     if(options_.triangle_weight) {
       // The user's weights are taken as exact doubles; their interval sum bounds the rounding of the double sum
       // whatever the number of triangles (a fixed relative slack would not).
@@ -401,13 +410,29 @@ public:
       if(upper) *upper = I.value().sup();
       return s;
     }
+    // the edges (a < b) as rows per a, sorted and unique: in increasing order when read row by row
+    for(const auto& t : tri)
+      for(int v : t)
+        if(v < 0 || std::size_t(v) >= pts_.size()) throw std::invalid_argument("weight_of: vertex index out of range");
+    const internal::Parallel_stage par = par_.timed(&weight_loop_time_);
+    std::vector<std::size_t> start;
+    internal::Uninit_vector<int> other;
+    internal::build_sorted_rows(pts_.size(), tri.size(), [&](std::size_t k, auto&& add) {
+      for(int i = 0; i < 3; ++i) add(std::min(tri[k][i], tri[k][(i + 1) % 3]), std::max(tri[k][i], tri[k][(i + 1) % 3]));
+    }, true, start, other, par);
+    internal::Uninit_vector<int> first(other.size());   // the row of every entry
+    par.for_blocks(pts_.size(), 4096, [&](std::size_t a0, std::size_t a1, std::size_t) {
+      for(std::size_t a = a0; a < a1; ++a)
+        std::fill(first.begin() + std::ptrdiff_t(start[a]), first.begin() + std::ptrdiff_t(start[a + 1]), int(a));
+    });
+    internal::Uninit_vector<double> len(other.size());
+    const Interval I = blocked_interval_sum(other.size(), [&](std::size_t k) {
+      len[k] = length(first[k], other[k]);
+      return interval_length(first[k], other[k]);
+    }, par);
     double s = 0;
-    Blocked_interval_sum I;
-    for(const auto& ed : e) {
-      s += length(ed.first, ed.second);
-      I.add(interval_length(ed.first, ed.second));
-    }
-    if(upper) *upper = I.value().sup();
+    for(double l : len) s += l;   // in order: the sum of the sequential loop
+    if(upper) *upper = I.sup();
     return s;
   }
 
@@ -473,8 +498,21 @@ private:
     return I.value().inf();
   }
 
+  // The stage "certificate" (validation, weights, bounds; 45 s at 10^7 points) for the progress callback.
+  void start_certificate_stage()
+  {
+    if(!options_.progress("certificate", 0)) throw CGAL::MDCS::Operation_cancelled("certificate");
+    certificate_reported_ = true;
+  }
+
   Mwt_result finish(Mwt_result& r)
   {
+    if(certificate_reported_) {
+      options_.progress("certificate", 1);   // the work is done: a cancellation here changes nothing
+      certificate_reported_ = false;
+    }
+    stats_.time_parallel_certificate += weight_loop_time_;
+    weight_loop_time_ = 0;
     stats_.time_total = stats_.time_setup + stats_.time_candidates + stats_.time_triangles + stats_.time_lmt + stats_.time_face_dp + stats_.time_lp_build + stats_.time_lp_solve +
                         stats_.time_certificate + stats_.time_branch_and_bound;
     r.statistics = stats_;
@@ -492,8 +530,9 @@ private:
     auto t0 = Stage_clock::now();
     index_.reset();
     {
-      const internal::Edge_triangles by_edge(all, edges_.size());
-      lmt_state_ = internal::lmt_skeleton(pts_, edges_, all, by_edge, is_hull_, options_.progress);
+      const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_lmt);
+      const internal::Edge_triangles by_edge(all, edges_.size(), par);
+      lmt_state_ = internal::lmt_skeleton(pts_, edges_, all, by_edge, is_hull_, options_.progress, par);
     }
     for(char c : lmt_state_) {
       if(c == internal::lmt_certain) ++stats_.lmt_certain_edges;
@@ -502,25 +541,32 @@ private:
     stats_.time_lmt = since(t0);
     if(!options_.progress("face dynamic program", 0)) throw CGAL::MDCS::Operation_cancelled("face dynamic program");
     t0 = Stage_clock::now();
+    const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_face_dp);
     all.compact([&](int t) {
       const auto& te = all.edges(t);
       return lmt_state_[te[0]] != internal::lmt_impossible && lmt_state_[te[1]] != internal::lmt_impossible &&
              lmt_state_[te[2]] != internal::lmt_impossible;
-    });
+    }, par);
     // the index of the edges that are not impossible: all that the face programs and the LP rows look up
     index_.reset(new internal::Edge_index(edges_, pts_.size(),
-                                          [&](std::size_t e) { return lmt_state_[e] != internal::lmt_impossible; }));
-    const internal::Edge_triangles by_edge(all, edges_.size());
-    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, all, by_edge, lmt_state_);
+                                          [&](std::size_t e) { return lmt_state_[e] != internal::lmt_impossible; }, par));
+    const internal::Edge_triangles by_edge(all, edges_.size(), par);
+    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, all, by_edge, lmt_state_, 400,
+                                                               par, options_.progress);
     // the faces solved by the program leave the LP; their edges shared with other faces become rows "= 1";
     // the LP keeps the triangles without an impossible edge in the other faces
     std::vector<internal::Lp_triangle> out;
-    for(int t : dp.dp_triangles()) {
-      fixed_.push_back(all.vertices(t));
+    fixed_.resize(dp.dp_triangles().size());
+    par.for_blocks(fixed_.size(), 1 << 14, [&](std::size_t k0, std::size_t k1, std::size_t) {
+      for(std::size_t k = k0; k < k1; ++k) fixed_[k] = all.vertices(dp.dp_triangles()[k]);
+    });
+    for(int t : dp.dp_triangles())
       for(int i = 0; i < 3; ++i) row_one_[all.edge(t, i)] = fixed_edge_[all.edge(t, i)] = 1;
-    }
-    for(std::size_t t = 0; t < all.size(); ++t)
-      if(dp.is_live(int(t)) && !dp.in_solved_face(int(t))) out.push_back(all.triangle(int(t)));
+    par.append_in_order(all.size(), 1 << 14, out,
+                        [&](std::size_t t0, std::size_t t1, std::vector<internal::Lp_triangle>& o) {
+                          for(std::size_t t = t0; t < t1; ++t)
+                            if(dp.is_live(int(t)) && !dp.in_solved_face(int(t))) o.push_back(all.triangle(int(t)));
+                        });
     stats_.lmt_faces = dp.number_of_faces();
     stats_.lmt_solved_faces = dp.number_of_solved_faces();
     stats_.dp_triangles = dp.dp_triangles().size();
@@ -532,21 +578,53 @@ private:
     return out;
   }
 
+  // The value of a Blocked_interval_sum of term(0), ..., term(count - 1), its blocks of 4096 terms summed in
+  // parallel: the same additions in the same order, so the same interval for every thread count. term(k) may
+  // write per-term results (each k is called once).
+  template <class Term>
+  Interval blocked_interval_sum(std::size_t count, Term term, const internal::Parallel_stage& par) const
+  {
+    const std::size_t B = 4096, full = count / B;
+    std::vector<Interval> part(full + 1, Interval(0));
+    par.for_blocks(count, B, [&](std::size_t k0, std::size_t k1, std::size_t b) {
+      Interval sum(0);
+      for(std::size_t k = k0; k < k1; ++k) sum += term(k);
+      part[b] = sum;
+    });
+    Interval total(0);
+    for(std::size_t b = 0; b < full; ++b) total += part[b];
+    return total + (count % B != 0 ? part[full] : Interval(0));
+  }
+
+  // The exact validation (empty: valid, or not asked for), in parallel.
+  std::string validated(const std::vector<std::array<int, 3>>& tri)
+  {
+    if(!options_.validate) return std::string();
+    return internal::validate_triangulation(pts_, *grid_, hull_, tri, par_.timed(&stats_.time_parallel_certificate));
+  }
+
   // Lower bound (input units) of the weight of the edges of the fixed triangles that are no LP row.
-  double fixed_weight_lower_bound() const
+  double fixed_weight_lower_bound()
   {
     if(fixed_.empty()) return 0;
-    Blocked_interval_sum I;
-    for(std::size_t e = 0; e < edges_.size(); ++e)
-      if(fixed_edge_[e] && (row_of_edge_.empty() || row_of_edge_[e] < 0)) I.add(interval_length(edges_[e].first, edges_[e].second));
-    return I.value().inf();
+    const internal::Parallel_stage par = par_.timed(&stats_.time_parallel_certificate);
+    std::vector<int> terms;   // the edges summed, in increasing order
+    par.append_in_order(edges_.size(), 1 << 16, terms, [&](std::size_t e0, std::size_t e1, std::vector<int>& out) {
+      for(std::size_t e = e0; e < e1; ++e)
+        if(fixed_edge_[e] && (row_of_edge_.empty() || row_of_edge_[e] < 0)) out.push_back(int(e));
+    });
+    return blocked_interval_sum(terms.size(), [&](std::size_t k) {
+      return interval_length(edges_[std::size_t(terms[k])].first, edges_[std::size_t(terms[k])].second);
+    }, par).inf();
   }
 
   // Every face solved by the dynamic program: no LP; the triangulation is validated exactly.
   Mwt_result solved_by_dynamic_program(Mwt_result& r)
   {
+    // the validation and the weights: a stage of its own for the progress callback (45 s at 10^7 points)
+    start_certificate_stage();
     const auto t0 = Stage_clock::now();
-    const std::string err = options_.validate ? internal::validate_triangulation(pts_, *grid_, hull_, fixed_) : std::string();
+    const std::string err = validated(fixed_);
     if(!err.empty()) {
       r.status = Mwt_status::solver_failed;
       r.message = "the dynamic program's triangles are not a triangulation (internal error): " + err;
@@ -598,7 +676,8 @@ private:
   {
     if(options_.triangle_weight) return user_weight(t.v[0], t.v[1], t.v[2]);
     double c = 0;
-    for(int i = 0; i < 3; ++i) c += (row_one_[t.edge[i]] ? 1.0 : 0.5) * edge_length_[t.edge[i]];
+    for(int i = 0; i < 3; ++i)
+      c += (row_one_[t.edge[i]] ? 1.0 : 0.5) * length(edges_[t.edge[i]].first, edges_[t.edge[i]].second);
     return c;
   }
 
@@ -675,10 +754,11 @@ private:
       if(x[j] > 0.5 || lo[j] <= tau) Z.push_back(triangles_[j]);
     // the LMT-skeleton on the triangles of Z: an MWT inside Z is locally minimal with triangles of Z
     const internal::Triangle_set Zs(edges_, Z);
-    const internal::Edge_triangles by_edge(Zs, edges_.size());
+    const internal::Parallel_stage par = par_.timed(&weight_loop_time_);
+    const internal::Edge_triangles by_edge(Zs, edges_.size(), par);
     std::function<bool(const char*, double)> progress = options_.progress;
-    const std::vector<char> state = internal::lmt_skeleton(pts_, edges_, Zs, by_edge, is_hull_, progress);
-    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, Zs, by_edge, state);
+    const std::vector<char> state = internal::lmt_skeleton(pts_, edges_, Zs, by_edge, is_hull_, progress, par);
+    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, Zs, by_edge, state, 400, par);
     if(dp.number_of_solved_faces() + 1 != dp.number_of_faces()) return 0;   // all but the outer face
     std::vector<internal::Length_segment> A, B;
     std::vector<std::pair<int, int>> ea, eb;
@@ -718,10 +798,13 @@ private:
   std::vector<Point_2> input_;
   internal::Indexed_points_2<Kernel> pts_;
   Mwt_options options_;
+  internal::Parallel_stage par_;   // the thread count (effective_threads of the tag and options_.threads)
   std::vector<int> hull_;
   std::unique_ptr<internal::Point_grid_2> grid_;
   double scale_ = 1, upper_weight_ = 0;
-  bool triangles_done_ = false, lp_done_ = false;
+  // time in the parallel loops of the const member functions (weight_of, support_certificate), certificate stage
+  mutable double weight_loop_time_ = 0;
+  bool triangles_done_ = false, lp_done_ = false, certificate_reported_ = false;
   std::vector<Edge> edges_;
   std::unique_ptr<internal::Edge_index> index_;
   std::vector<char> is_hull_, row_is_hull_, lmt_state_;
@@ -729,8 +812,7 @@ private:
   std::vector<char> fixed_edge_;   // edges of the triangles fixed by the dynamic program
   std::vector<std::array<int, 3>> fixed_;
   std::vector<internal::Lp_triangle> triangles_;
-  std::vector<int> row_of_edge_;
-  std::vector<double> edge_length_;
+  internal::Uninit_vector<int> row_of_edge_;   // filled with -1 in parallel
   Sparse_linear_program lp_;
   Mwt_statistics stats_;
 };

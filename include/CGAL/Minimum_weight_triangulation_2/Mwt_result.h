@@ -121,8 +121,12 @@ struct Mwt_options
   /// LP path, Euclidean metric: when the duals do not separate the optimum, try the exact certificate on the
   /// triangles of (near) zero reduced cost (`Mwt_result::certificate_support`).
   bool exact_support_certificate = true;
-  /// Progress/cancel callback `bool(const char* stage, double fraction)`; see CGAL/MDCS/progress.h.
+  /// Progress/cancel callback `bool(const char* stage, double fraction)`; see CGAL/MDCS/progress.h. With
+  /// several threads it is still called from the calling thread only.
   std::function<bool(const char*, double)> progress;
+  /// Threads of a run with `CGAL::Parallel_tag` / `CGAL::Parallel_if_available_tag` (0: every hardware thread;
+  /// ignored with `CGAL::Sequential_tag` or without TBB). The result does not depend on it.
+  std::size_t threads = 0;
 };
 
 /// Sizes and timings (seconds) of the stages of one run.
@@ -144,6 +148,11 @@ struct Mwt_statistics
   double time_setup = 0;
   double time_candidates = 0, time_triangles = 0, time_lp_build = 0, time_lp_solve = 0, time_certificate = 0,
          time_branch_and_bound = 0, time_total = 0;
+  /// Threads the run used (1: sequential).
+  std::size_t threads = 1;
+  /// The part of each stage's time spent inside its parallel loops (same clock; the rest of the stage is serial).
+  double time_parallel_setup = 0, time_parallel_candidates = 0, time_parallel_triangles = 0, time_parallel_lmt = 0,
+         time_parallel_face_dp = 0, time_parallel_certificate = 0;
 };
 
 /// Result of minimum_weight_triangulation_2().

@@ -50,6 +50,10 @@ inline bool has_lp_solver(Lp_solver_choice c)
 /*!
   \brief Minimum weight triangulation of a point set by the triangle-based LP with a user LP solver.
 
+  \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`:
+  the candidate edges, empty triangles, LMT-skeleton, face programs and validation then run on
+  `options.threads` threads (0: all hardware threads; sequential without TBB). The triangles, the weight, the
+  bounds and the status are the same for every thread count.
   \tparam PointRange a range of `Point_2` of a CGAL kernel.
   \tparam LpSolver a model of `LinearProgramSolver`.
   `binary_solver` (may be empty) solves the 0/1 version of an LP; it resolves fractional LP optima.
@@ -59,7 +63,7 @@ inline bool has_lp_solver(Lp_solver_choice c)
   coordinates outside `Mwt_coordinate_range`).
   \throws CGAL::MDCS::Operation_cancelled when the progress callback returns false.
 */
-template <class PointRange, class LpSolver>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class PointRange, class LpSolver>
 Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_options& options, const LpSolver& solver,
     std::function<Linear_program_solution(const Sparse_linear_program&)> binary_solver)
 {
@@ -74,10 +78,12 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   const auto t0 = std::chrono::steady_clock::now();
 #endif
   std::vector<Point_2> p;
+  double sort_parallel_time = 0;
   {
     const std::vector<Point_2> input(std::begin(points), std::end(points));
     try {
-      order = internal::hilbert_order(input);
+      const internal::Parallel_stage par(CGAL::MDCS::effective_threads<ConcurrencyTag>(options.threads), &sort_parallel_time);
+      order = internal::hilbert_order(input, par);
     } catch(const std::invalid_argument&) {
       internal::Indexed_points_2<Kernel> ip(input);
       internal::checked_hull_boundary(ip);   // throws with the input indices
@@ -95,7 +101,7 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
 #endif
   Mwt_result r;
   try {
-    Minimum_weight_triangulation_lp_2<Kernel> mwt(std::move(p), options);   // no second copy of the points
+    Minimum_weight_triangulation_lp_2<Kernel, ConcurrencyTag> mwt(std::move(p), options);   // no second copy of the points
     if(options.convex_position_by_dynamic_program && !options.triangle_weight && mwt.in_strictly_convex_position() &&
        mwt.hull().size() <= convex_polygon_mwt_max_vertices()) {
       r = mwt.solve_in_convex_position();
@@ -114,6 +120,7 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   for(auto& t : r.triangles)
     for(int& v : t) v = order[std::size_t(v)];
   r.statistics.time_setup += sort_time;
+  r.statistics.time_parallel_setup += sort_parallel_time;
   r.statistics.time_total += sort_time;
   return r;
 }
@@ -127,12 +134,15 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   `options.branch_and_bound_time_limit` (status `fractional_bound_only`); both ask `options.progress` about once
   a second (stages "LP solve" and "branch and bound"), which can cancel them.
 
+  `ConcurrencyTag` and `options.threads` as above, e.g.
+  `minimum_weight_triangulation_2<CGAL::Parallel_if_available_tag>(points, options)`.
+
   \returns a `Mwt_result`: the triangles (index triples, counter-clockwise), the weight, the status and a
   rigorous lower bound.
   \throws std::invalid_argument on bad input, std::runtime_error when the requested solver is not built in,
   CGAL::MDCS::Operation_cancelled when the progress callback returns false.
 */
-template <class PointRange>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class PointRange>
 Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_options& options = Mwt_options())
 {
   if(!(options.lp_time_limit >= 0) || !(options.branch_and_bound_time_limit >= 0))
@@ -166,7 +176,7 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
     case Lp_solver_choice::clp: {
       CLP_linear_program_solver clp;
       clp.set_control(control);
-      return minimum_weight_triangulation_2(points, options, clp, bb);
+      return minimum_weight_triangulation_2<ConcurrencyTag>(points, options, clp, bb);
     }
 #endif
 #if defined(MDCS_HAS_GLPK)
@@ -174,7 +184,7 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
     case Lp_solver_choice::exact: {
       GLPK_linear_program_solver glpk(c == Lp_solver_choice::exact);
       glpk.set_control(control);
-      return minimum_weight_triangulation_2(points, options, glpk, bb);
+      return minimum_weight_triangulation_2<ConcurrencyTag>(points, options, glpk, bb);
     }
 #endif
     default: break;

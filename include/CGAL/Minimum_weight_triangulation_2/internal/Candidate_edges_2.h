@@ -11,6 +11,8 @@
 #define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_INTERNAL_CANDIDATE_EDGES_2_H
 
 #include <CGAL/Minimum_weight_triangulation_2/internal/Indexed_points_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Parallel_stage_2.h>
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 
 #include <algorithm>
@@ -30,9 +32,10 @@ namespace internal {
 typedef std::pair<int, int> Edge;   // first < second
 
 /// Throws std::invalid_argument on fewer than 3 points, non-finite coordinates, duplicates, all collinear.
-/// Returns the convex hull boundary, counter-clockwise, including collinear boundary points.
+/// Returns the convex hull boundary, counter-clockwise, including collinear boundary points. The points are
+/// sorted in parallel (`par`; a stable sort, so the same order for every thread count).
 template <class P>
-std::vector<int> checked_hull_boundary(const P& pts)
+std::vector<int> checked_hull_boundary(const P& pts, const Parallel_stage& par = Parallel_stage())
 {
   const int n = int(pts.size());
   if(n < 3) throw std::invalid_argument("minimum_weight_triangulation_2: needs at least 3 points, got " + std::to_string(n));
@@ -45,7 +48,7 @@ std::vector<int> checked_hull_boundary(const P& pts)
     const auto &A = pts.point(a), &B = pts.point(b);
     return A.x() < B.x() || (A.x() == B.x() && A.y() < B.y());
   };
-  std::sort(order.begin(), order.end(), less);
+  parallel_stable_sort(order, less, par);
   for(int i = 1; i < n; ++i)
     if(!less(order[i - 1], order[i]))
       throw std::invalid_argument("minimum_weight_triangulation_2: duplicate points " + std::to_string(order[i - 1]) +
@@ -106,22 +109,26 @@ bool in_diamond_half(const P& pts, int p, int q, int r)
   return cross + err < t * (dot1 - err) && cross + err < t * (dot2 - err);
 }
 
-/// Every segment (i, j) with no input point in its interior: O(n^2) segments, grid query each.
+/// Every segment (i, j) with no input point in its interior: O(n^2) segments, grid query each. Blocks of
+/// points p in parallel (`par`), their edges (p, q > p) joined in the order of p.
 template <class P, class Progress>
-std::vector<Edge> all_valid_edges(const P& pts, const Point_grid_2& grid, Progress& progress)
+std::vector<Edge> all_valid_edges(const P& pts, const Point_grid_2& grid, Progress& progress,
+                                  const Parallel_stage& par = Parallel_stage())
 {
   const int n = int(pts.size());
   std::vector<Edge> out;
-  CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "candidate edges", std::size_t(n));
-  for(int p = 0; p < n; ++p) {
-    report(std::size_t(p));
-    for(int q = p + 1; q < n; ++q) {
-      const bool blocked = grid.any_in_box(std::min(pts.x(p), pts.x(q)), std::min(pts.y(p), pts.y(q)),
-                                           std::max(pts.x(p), pts.x(q)), std::max(pts.y(p), pts.y(q)),
-                                           [&](int r) { return r != p && r != q && pts.strictly_between(p, q, r); });
-      if(!blocked) out.emplace_back(p, q);
-    }
-  }
+  CGAL::MDCS::Parallel_progress<Progress> report(progress, "candidate edges", std::size_t(n));
+  par.append_in_order(std::size_t(n), 16, out, [&](std::size_t b0, std::size_t b1, std::vector<Edge>& o) {
+    if(report.cancelled()) return;
+    for(int p = int(b0); p < int(b1); ++p)
+      for(int q = p + 1; q < n; ++q) {
+        const bool blocked = grid.any_in_box(std::min(pts.x(p), pts.x(q)), std::min(pts.y(p), pts.y(q)),
+                                             std::max(pts.x(p), pts.x(q)), std::max(pts.y(p), pts.y(q)),
+                                             [&](int r) { return r != p && r != q && pts.strictly_between(p, q, r); });
+        if(!blocked) o.emplace_back(p, q);
+      }
+    report.advance(b1 - b0);
+  });
   report.finish();
   return out;
 }
@@ -166,9 +173,14 @@ int diamond_half_state(const P& pts, const Point_grid_2& grid, int p, int q, int
   exact test, side by side, on the grid cells of that half only (a half proven occupied is not searched).
   Points near the boundary of the point set have sectors that no point kills; the second pass keeps their
   long edges from costing a search over a large box each.
+
+  Both passes run over blocks in parallel (`par`): a point's search writes its own bounds and pairs only, a
+  pair's test its own verdict; the pairs and the edges are joined in block order, as the sequential loops
+  make them.
 */
 template <class P, class Progress>
-std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid, Progress& progress)
+std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid, Progress& progress,
+                                          const Parallel_stage& par = Parallel_stage())
 {
   const int n = int(pts.size());
   const int S = 64;
@@ -178,13 +190,11 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
   // of it, and the killing point's true angle within E of its computed one
   const double slack = 3 * fast_angle_error();
   const double kill_factor = 2 * std::cos(pi8) * (1 + 1e-6);   // 2 cos(pi/4.6) = 1.5505
-  std::vector<float> bound(std::size_t(n) * S);                 // per point and sector: max(left, right) kill radius
+  Uninit_vector<float> bound(std::size_t(n) * S);               // per point and sector: max(left, right) kill radius
   struct Pair { int p, q; unsigned char known; };               // known: bit 0 left occupied, bit 1 right occupied
-  std::vector<Pair> pairs;
+  Uninit_vector<Pair> pairs;
   pairs.reserve(std::size_t(n) * 24);
-  std::vector<double> kl(S), kr(S);
   struct Seen { int r; double th, d; };
-  std::vector<Seen> seen;
   double bx0 = HUGE_VAL, by0 = HUGE_VAL, bx1 = -HUGE_VAL, by1 = -HUGE_VAL;
   for(int i = 0; i < n; ++i) {
     bx0 = std::min(bx0, pts.x(i)); bx1 = std::max(bx1, pts.x(i));
@@ -199,7 +209,6 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
     ca0[s] = std::cos(s * w - widen); sa0[s] = std::sin(s * w - widen);
     ca1[s] = std::cos((s + 1) * w + widen); sa1[s] = std::sin((s + 1) * w + widen);
   }
-  std::vector<double> far(S);
   auto exit_distance = [&](double px, double py, double dx, double dy) {
     double t = HUGE_VAL;
     if(dx > 1e-300) t = std::min(t, (bx1 - px) / dx);
@@ -208,37 +217,12 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
     if(dy < -1e-300) t = std::min(t, (by0 - py) / dy);
     return std::max(0.0, t);
   };
-  // far_of(s) is computed when first needed (most sectors are finished by kills)
-  double corner_angle[4], corner_distance[4];
-  bool corners_done = false;
-  auto far_of = [&](int p, int s) {
-    if(far[s] >= 0) return far[s];
-    const double px = pts.x(p), py = pts.y(p);
-    if(!corners_done) {
-      const double cxs[4] = {bx0, bx1, bx1, bx0}, cys[4] = {by0, by0, by1, by1};
-      for(int c = 0; c < 4; ++c) {
-        corner_angle[c] = std::atan2(cys[c] - py, cxs[c] - px);
-        if(corner_angle[c] < 0) corner_angle[c] += two_pi;
-        corner_distance[c] = std::hypot(cxs[c] - px, cys[c] - py);
-      }
-      corners_done = true;
-    }
-    const double a0 = s * w - widen, a1 = (s + 1) * w + widen;
-    double f = std::max(exit_distance(px, py, ca0[s], sa0[s]), exit_distance(px, py, ca1[s], sa1[s]));
-    for(int c = 0; c < 4; ++c) {
-      double a = corner_angle[c];
-      if(a < a0) a += two_pi;
-      if(a >= a0 && a <= a1) f = std::max(f, corner_distance[c]);
-    }
-    return far[s] = f * (1 + 1e-9) + 1e-12 * diag;
-  };
   auto angle = [](double dx, double dy) { return fast_angle(dx, dy); };
   auto sector = [&](double th) { return std::min(S - 1, int(th / w)); };
   // kill ranges in units of sectors, on arrays extended by X sectors on both sides (no modulo in the hot loop);
   // folded(k, s) is the bound of sector s
   const int X = 16;
   const double inv_w = 1 / w, a_w = pi8 / w, slack_w = slack / w;
-  std::vector<double> kle(S + 2 * X), kre(S + 2 * X);
   // floor and ceil of small values without a library call (|x| < 2^31)
   auto ifloor = [](double x) { const int i = int(x); return i - (x < double(i) ? 1 : 0); };
   auto iceil = [](double x) { const int i = int(x); return i + (x > double(i) ? 1 : 0); };
@@ -293,119 +277,161 @@ std::vector<Edge> diamond_candidate_edges(const P& pts, const Point_grid_2& grid
       if(std::max(std::abs(di), std::abs(dj)) >= 2)
         cell_mask[std::size_t(di + K) + std::size_t(2 * K + 1) * std::size_t(dj + K)] =
           offset_mask(di - 1.0, di + 1.0, dj - 1.0, dj + 1.0);
-  CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "candidate edges", std::size_t(n) + 1);
-  for(int p = 0; p < n; ++p) {
-    report(std::size_t(p));
-    std::fill(kle.begin(), kle.end(), HUGE_VAL);
-    std::fill(kre.begin(), kre.end(), HUGE_VAL);
-    std::fill(far.begin(), far.end(), -1.0);
-    corners_done = false;
-    seen.clear();
-    const double px = pts.x(p), py = pts.y(p);
-    const int ci = grid.cx(px), cj = grid.cy(py);
-    const double c = grid.cell_size();
-    // need: bit s set when sector s may still receive a kill or a candidate: an unfinished sector, and the
-    // sectors of the kill wedges of its unfinished sides (a cell of a later ring meeting none of them is skipped:
-    // its points are farther than the bounds of the sectors they could be candidates in or kill)
-    std::uint64_t need = ~std::uint64_t(0);
-    const double box_distance = std::min(std::min(px - bx0, bx1 - px), std::min(py - by0, by1 - py));
-    auto visit_cell = [&](int i, int j) {
-      for(int it = grid.first(i, j); it != grid.first(i + 1, j); ++it) {
-        const int r = grid.item(it);
-        if(r == p) continue;
-        const double dx = grid.item_x(it) - px, dy = grid.item_y(it) - py;
-        const double d = std::sqrt(dx * dx + dy * dy);
-        const double th = angle(dx, dy);
-        seen.push_back(Seen{r, th, d});
-        const double u = th * inv_w;
-        kill(kle.data() + X, u - a_w + slack_w, u - slack_w, kill_factor * d);
-        kill(kre.data() + X, u + slack_w, u + a_w - slack_w, kill_factor * d);
+  // pass 1 counts one step per point, pass 2 as many steps in all
+  CGAL::MDCS::Parallel_progress<Progress> report(progress, "candidate edges", 2 * std::size_t(n));
+  // pass 1 on a block of points [p0, p1): a workspace per block (a few kB)
+  auto search_block = [&](std::size_t p0, std::size_t p1, Uninit_vector<Pair>& block_pairs) {
+    if(report.cancelled()) return;
+    std::vector<double> kl(S), kr(S), far(S), kle(S + 2 * X), kre(S + 2 * X);
+    std::vector<Seen> seen;
+    // far_of(s) is computed when first needed (most sectors are finished by kills)
+    double corner_angle[4], corner_distance[4];
+    bool corners_done = false;
+    auto far_of = [&](int p, int s) {
+      if(far[s] >= 0) return far[s];
+      const double px = pts.x(p), py = pts.y(p);
+      if(!corners_done) {
+        const double cxs[4] = {bx0, bx1, bx1, bx0}, cys[4] = {by0, by0, by1, by1};
+        for(int c = 0; c < 4; ++c) {
+          corner_angle[c] = std::atan2(cys[c] - py, cxs[c] - px);
+          if(corner_angle[c] < 0) corner_angle[c] += two_pi;
+          corner_distance[c] = std::hypot(cxs[c] - px, cys[c] - py);
+        }
+        corners_done = true;
       }
+      const double a0 = s * w - widen, a1 = (s + 1) * w + widen;
+      double f = std::max(exit_distance(px, py, ca0[s], sa0[s]), exit_distance(px, py, ca1[s], sa1[s]));
+      for(int c = 0; c < 4; ++c) {
+        double a = corner_angle[c];
+        if(a < a0) a += two_pi;
+        if(a >= a0 && a <= a1) f = std::max(f, corner_distance[c]);
+      }
+      return far[s] = f * (1 + 1e-9) + 1e-12 * diag;
     };
-    // rings beyond K (points near the boundary of the point set): the ring's sides in blocks of 32 cells; a
-    // block, then a cell, is skipped when the sectors of its offset box miss `need`
-    const int block = 32;
-    auto side = [&](bool row, int fixed, int from, int to) {
-      for(int b0 = from; b0 <= to; b0 += block) {
-        const int b1 = std::min(to, b0 + block - 1);
-        const double f0 = fixed - (row ? cj : ci) - 1.0, f1 = f0 + 2;
-        const double g0 = b0 - (row ? ci : cj) - 1.0, g1 = b1 - (row ? ci : cj) + 1.0;
-        if((row ? offset_mask(g0, g1, f0, f1) : offset_mask(f0, f1, g0, g1)) & need) {
-          for(int t = b0; t <= b1; ++t) {
-            const int i = row ? t : fixed, j = row ? fixed : t;
-            if(grid.first(i, j) == grid.first(i + 1, j)) continue;
-            const double h0 = t - (row ? ci : cj) - 1.0, h1 = h0 + 2;
-            if((row ? offset_mask(h0, h1, f0, f1) : offset_mask(f0, f1, h0, h1)) & need) visit_cell(i, j);
+    for(int p = int(p0); p < int(p1); ++p) {
+      std::fill(kle.begin(), kle.end(), HUGE_VAL);
+      std::fill(kre.begin(), kre.end(), HUGE_VAL);
+      std::fill(far.begin(), far.end(), -1.0);
+      corners_done = false;
+      seen.clear();
+      const double px = pts.x(p), py = pts.y(p);
+      const int ci = grid.cx(px), cj = grid.cy(py);
+      const double c = grid.cell_size();
+      // need: bit s set when sector s may still receive a kill or a candidate: an unfinished sector, and the
+      // sectors of the kill wedges of its unfinished sides (a cell of a later ring meeting none of them is skipped:
+      // its points are farther than the bounds of the sectors they could be candidates in or kill)
+      std::uint64_t need = ~std::uint64_t(0);
+      const double box_distance = std::min(std::min(px - bx0, bx1 - px), std::min(py - by0, by1 - py));
+      auto visit_cell = [&](int i, int j) {
+        for(int it = grid.first(i, j); it != grid.first(i + 1, j); ++it) {
+          const int r = grid.item(it);
+          if(r == p) continue;
+          const double dx = grid.item_x(it) - px, dy = grid.item_y(it) - py;
+          const double d = std::sqrt(dx * dx + dy * dy);
+          const double th = angle(dx, dy);
+          seen.push_back(Seen{r, th, d});
+          const double u = th * inv_w;
+          kill(kle.data() + X, u - a_w + slack_w, u - slack_w, kill_factor * d);
+          kill(kre.data() + X, u + slack_w, u + a_w - slack_w, kill_factor * d);
+        }
+      };
+      // rings beyond K (points near the boundary of the point set): the ring's sides in blocks of 32 cells; a
+      // block, then a cell, is skipped when the sectors of its offset box miss `need`
+      const int block = 32;
+      auto side = [&](bool row, int fixed, int from, int to) {
+        for(int b0 = from; b0 <= to; b0 += block) {
+          const int b1 = std::min(to, b0 + block - 1);
+          const double f0 = fixed - (row ? cj : ci) - 1.0, f1 = f0 + 2;
+          const double g0 = b0 - (row ? ci : cj) - 1.0, g1 = b1 - (row ? ci : cj) + 1.0;
+          if((row ? offset_mask(g0, g1, f0, f1) : offset_mask(f0, f1, g0, g1)) & need) {
+            for(int t = b0; t <= b1; ++t) {
+              const int i = row ? t : fixed, j = row ? fixed : t;
+              if(grid.first(i, j) == grid.first(i + 1, j)) continue;
+              const double h0 = t - (row ? ci : cj) - 1.0, h1 = h0 + 2;
+              if((row ? offset_mask(h0, h1, f0, f1) : offset_mask(f0, f1, h0, h1)) & need) visit_cell(i, j);
+            }
           }
         }
-      }
-    };
-    for(int k = 0;; ++k) {
-      if(k > K && need != ~std::uint64_t(0)) {
-        const int i0 = std::max(0, ci - k), i1 = std::min(grid.nx() - 1, ci + k);
-        const int j0 = std::max(0, cj - k + 1), j1 = std::min(grid.ny() - 1, cj + k - 1);
-        if(cj - k >= 0) side(true, cj - k, i0, i1);
-        if(cj + k < grid.ny()) side(true, cj + k, i0, i1);
-        if(ci - k >= 0) side(false, ci - k, j0, j1);
-        if(ci + k < grid.nx()) side(false, ci + k, j0, j1);
-      } else {
-        for(int j = cj - k; j <= cj + k; ++j) {
-          if(j < 0 || j >= grid.ny()) continue;
-          const bool full_row = (j == cj - k || j == cj + k);
-          for(int i = ci - k; i <= ci + k; i += (full_row || k == 0) ? 1 : 2 * k) {
-            if(i < 0 || i >= grid.nx()) continue;
-            if(grid.begin(i, j) == grid.end(i, j)) continue;
-            if(k >= 2 && k <= K && need != ~std::uint64_t(0) &&
-               (cell_mask[std::size_t(i - ci + K) + std::size_t(2 * K + 1) * std::size_t(j - cj + K)] & need) == 0) continue;
-            visit_cell(i, j);
+      };
+      for(int k = 0;; ++k) {
+        if(k > K && need != ~std::uint64_t(0)) {
+          const int i0 = std::max(0, ci - k), i1 = std::min(grid.nx() - 1, ci + k);
+          const int j0 = std::max(0, cj - k + 1), j1 = std::min(grid.ny() - 1, cj + k - 1);
+          if(cj - k >= 0) side(true, cj - k, i0, i1);
+          if(cj + k < grid.ny()) side(true, cj + k, i0, i1);
+          if(ci - k >= 0) side(false, ci - k, j0, j1);
+          if(ci + k < grid.nx()) side(false, ci + k, j0, j1);
+        } else {
+          for(int j = cj - k; j <= cj + k; ++j) {
+            if(j < 0 || j >= grid.ny()) continue;
+            const bool full_row = (j == cj - k || j == cj + k);
+            for(int i = ci - k; i <= ci + k; i += (full_row || k == 0) ? 1 : 2 * k) {
+              if(i < 0 || i >= grid.nx()) continue;
+              if(grid.begin(i, j) == grid.end(i, j)) continue;
+              if(k >= 2 && k <= K && need != ~std::uint64_t(0) &&
+                 (cell_mask[std::size_t(i - ci + K) + std::size_t(2 * K + 1) * std::size_t(j - cj + K)] & need) == 0) continue;
+              visit_cell(i, j);
+            }
           }
         }
+        const bool all = ci - k <= 0 && cj - k <= 0 && ci + k >= grid.nx() - 1 && cj + k >= grid.ny() - 1;
+        if(all) break;
+        const double reach = k * c * (1 - 1e-9);
+        // open: unfinished sectors; open_l / open_r: those whose left / right side is not yet killed
+        std::uint64_t open = 0, open_l = 0, open_r = 0;
+        for(int s = 0; s < S; ++s) {
+          kl[s] = folded(kle, s);
+          kr[s] = folded(kre, s);
+          if(std::max(kl[s], kr[s]) < reach) continue;
+          // far_of(s) >= the distance from p to the bounding box's boundary
+          if(reach > box_distance && far_of(p, s) < reach) continue;
+          const std::uint64_t bit = std::uint64_t(1) << s;
+          open |= bit;
+          if(!(kl[s] < reach)) open_l |= bit;
+          if(!(kr[s] < reach)) open_r |= bit;
+        }
+        if(open == 0) break;
+        // kl[s] comes from points at angles in (s w, (s + 1) w + a), kr[s] from (s w - a, (s + 1) w)
+        need = open;
+        for(int t = 1; t <= wedge; ++t) need |= rotl(open_l, t) | rotl(open_r, S - t);
       }
-      const bool all = ci - k <= 0 && cj - k <= 0 && ci + k >= grid.nx() - 1 && cj + k >= grid.ny() - 1;
-      if(all) break;
-      const double reach = k * c * (1 - 1e-9);
-      // open: unfinished sectors; open_l / open_r: those whose left / right side is not yet killed
-      std::uint64_t open = 0, open_l = 0, open_r = 0;
-      for(int s = 0; s < S; ++s) {
-        kl[s] = folded(kle, s);
-        kr[s] = folded(kre, s);
-        if(std::max(kl[s], kr[s]) < reach) continue;
-        // far_of(s) >= the distance from p to the bounding box's boundary
-        if(reach > box_distance && far_of(p, s) < reach) continue;
-        const std::uint64_t bit = std::uint64_t(1) << s;
-        open |= bit;
-        if(!(kl[s] < reach)) open_l |= bit;
-        if(!(kr[s] < reach)) open_r |= bit;
+      for(int s = 0; s < S; ++s) { kl[s] = folded(kle, s); kr[s] = folded(kre, s); }
+      float* B = bound.data() + std::size_t(p) * S;
+      for(int s = 0; s < S; ++s) B[s] = round_up(std::max(kl[s], kr[s]));
+      for(const Seen& x : seen) {
+        if(x.r < p) continue;
+        const int s = sector(x.th);
+        if(x.d > std::max(kl[s], kr[s])) continue;   // proven dead by the kill regions
+        block_pairs.push_back(Pair{p, x.r, (unsigned char)((x.d > kl[s] ? 1 : 0) | (x.d > kr[s] ? 2 : 0))});
       }
-      if(open == 0) break;
-      // kl[s] comes from points at angles in (s w, (s + 1) w + a), kr[s] from (s w - a, (s + 1) w)
-      need = open;
-      for(int t = 1; t <= wedge; ++t) need |= rotl(open_l, t) | rotl(open_r, S - t);
     }
-    for(int s = 0; s < S; ++s) { kl[s] = folded(kle, s); kr[s] = folded(kre, s); }
-    float* B = bound.data() + std::size_t(p) * S;
-    for(int s = 0; s < S; ++s) B[s] = round_up(std::max(kl[s], kr[s]));
-    for(const Seen& x : seen) {
-      if(x.r < p) continue;
-      const int s = sector(x.th);
-      if(x.d > std::max(kl[s], kr[s])) continue;   // proven dead by the kill regions
-      pairs.push_back(Pair{p, x.r, (unsigned char)((x.d > kl[s] ? 1 : 0) | (x.d > kr[s] ? 2 : 0))});
-    }
-  }
+    report.advance(p1 - p0);
+  };
+  par.append_in_order(std::size_t(n), 256, pairs, search_block);
+  if(report.cancelled()) report.finish();   // throws
+  // pass 2 (every bound of pass 1 is final): the pairs in blocks
   std::vector<Edge> out;
   out.reserve(pairs.size());
-  for(const Pair& e : pairs) {
-    const int p = e.p, q = e.q;
-    const double dx = pts.x(p) - pts.x(q), dy = pts.y(p) - pts.y(q);
-    const double d = std::sqrt(dx * dx + dy * dy);
-    if(double(bound[std::size_t(q) * S + sector(angle(dx, dy))]) * (1 + 1e-9) < d) continue;   // dead as seen from q
-    // both halves occupied, or a point inside pq: no MWT edge; a half searched to the end also saw the segment
-    const int left = (e.known & 1) ? 1 : diamond_half_state(pts, grid, p, q, 1);
-    if(left == 2) continue;
-    if(left == 0) { out.emplace_back(p, q); continue; }
-    const int right = (e.known & 2) ? 1 : diamond_half_state(pts, grid, p, q, -1);
-    if(right == 0) out.emplace_back(p, q);
-  }
+  const std::size_t pair_count = pairs.size();
+  par.append_in_order(pair_count, 4096, out, [&](std::size_t b0, std::size_t b1, std::vector<Edge>& block_out) {
+    if(report.cancelled()) return;
+    for(std::size_t k = b0; k < b1; ++k) {
+      const Pair& e = pairs[k];
+      const int p = e.p, q = e.q;
+      const double dx = pts.x(p) - pts.x(q), dy = pts.y(p) - pts.y(q);
+      const double d = std::sqrt(dx * dx + dy * dy);
+      if(double(bound[std::size_t(q) * S + sector(angle(dx, dy))]) * (1 + 1e-9) < d) continue;   // dead as seen from q
+      // both halves occupied, or a point inside pq: no MWT edge; a half searched to the end also saw the segment
+      const int left = (e.known & 1) ? 1 : diamond_half_state(pts, grid, p, q, 1);
+      if(left == 2) continue;
+      if(left == 0) { block_out.emplace_back(p, q); continue; }
+      const int right = (e.known & 2) ? 1 : diamond_half_state(pts, grid, p, q, -1);
+      if(right == 0) block_out.emplace_back(p, q);
+    }
+    // n steps over all the pairs (the integer parts telescope)
+    report.advance(std::size_t((unsigned long long)(b1) * std::size_t(n) / pair_count -
+                          (unsigned long long)(b0) * std::size_t(n) / pair_count));
+  });
   report.finish();
   return out;
 }

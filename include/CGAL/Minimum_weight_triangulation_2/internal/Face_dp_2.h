@@ -18,70 +18,120 @@
 
 #include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Lmt_skeleton_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Parallel_stage_2.h>
+#include <CGAL/MDCS/concurrency.h>
+#include <CGAL/MDCS/progress.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Minimum_weight_triangulation_2 {
 namespace internal {
 
-/// Faces of the certain edges, the dynamic program on the simple ones, and the face of every triangle.
+/*!
+  Faces of the certain edges, the dynamic program on the simple ones, and the face of every triangle.
+
+  In parallel (`par`): the angular sorts, the face tracing (a face is the cycle of the next-half-edge map; it is
+  numbered by its smallest half-edge, as the sequential walk numbers it) and the programs (blocks of faces, their
+  triangles joined in face order). Every face's program is independent of the others.
+*/
 template <class P>
 class Face_dp_2
 {
 public:
   /// `state`: the result of lmt_skeleton(); `tri`: the empty triangles (those with an impossible edge are
   /// ignored), `by_edge` their lists per edge; `max_face`: larger faces go to the LP (the programs take O(m^3)
-  /// time, O(m^2) memory).
+  /// time, O(m^2) memory). `progress`, when given, hears the stage "face dynamic program" (from the calling
+  /// thread only) and can cancel it (then CGAL::MDCS::Operation_cancelled is thrown).
   Face_dp_2(const P& pts, const std::vector<Edge>& edges, const Edge_index& index, const Triangle_set& tri,
-            const Edge_triangles& by_edge, const std::vector<char>& state, std::size_t max_face = 400)
+            const Edge_triangles& by_edge, const std::vector<char>& state, std::size_t max_face = 400,
+            const Parallel_stage& par = Parallel_stage(),
+            const std::function<bool(const char*, double)>& progress = std::function<bool(const char*, double)>())
     : pts_(pts), edges_(edges), index_(index), tri_(tri), state_(state), n_(int(pts.size())), by_edge_(by_edge),
       nbr_start_(std::size_t(n_) + 1, 0)
   {
     // certain neighbours of every vertex, counter-clockwise from angle 0 (flat arrays)
-    for(std::size_t e = 0; e < edges.size(); ++e)
-      if(state[e] == lmt_certain) { ++nbr_start_[std::size_t(edges[e].first) + 1]; ++nbr_start_[std::size_t(edges[e].second) + 1]; }
-    for(std::size_t v = 1; v < nbr_start_.size(); ++v) nbr_start_[v] += nbr_start_[v - 1];
-    nbr_.resize(nbr_start_.back());
-    {
-      std::vector<std::size_t> fill(nbr_start_.begin(), nbr_start_.end() - 1);
-      for(std::size_t e = 0; e < edges.size(); ++e)
-        if(state[e] == lmt_certain) {
-          nbr_[fill[std::size_t(edges[e].first)]++] = edges[e].second;
-          nbr_[fill[std::size_t(edges[e].second)]++] = edges[e].first;
-        }
-    }
-    for(int v = 0; v < n_; ++v)
-      std::sort(nbr_.begin() + std::ptrdiff_t(nbr_start_[v]), nbr_.begin() + std::ptrdiff_t(nbr_start_[v + 1]),
-                [&](int a, int b) { return ccw_less(v, a, b); });
+    // (rows of neighbours in parallel, then sorted by angle: the directions from a vertex are distinct)
+    build_sorted_rows(std::size_t(n_), edges.size(), [&](std::size_t e, auto&& add) {
+      if(state[e] == lmt_certain) {
+        add(edges[e].first, edges[e].second);
+        add(edges[e].second, edges[e].first);
+      }
+    }, false, nbr_start_, nbr_, par);
+    par.for_blocks(std::size_t(n_), 4096, [&](std::size_t v0, std::size_t v1, std::size_t) {
+      for(int v = int(v0); v < int(v1); ++v)
+        std::sort(nbr_.begin() + std::ptrdiff_t(nbr_start_[v]), nbr_.begin() + std::ptrdiff_t(nbr_start_[v + 1]),
+                  [&](int a, int b) { return ccw_less(v, a, b); });
+    });
     half_face_.assign(nbr_.size(), -1);
-    trace_faces();
-    // the face of each isolated point (no certain edge), found through a triangle at it
+    trace_faces(par);
+    // the face of each isolated point (no certain edge), found through a triangle at it: the (rare) live
+    // triangles at isolated points are listed in parallel, then taken in triangle order
+    std::vector<std::pair<int, int>> at_isolated;   // (triangle, isolated vertex)
+    par.append_in_order(tri.size(), 1 << 14, at_isolated,
+                        [&](std::size_t t0, std::size_t t1, std::vector<std::pair<int, int>>& out) {
+                          for(std::size_t t = t0; t < t1; ++t) {
+                            if(!is_live(int(t))) continue;
+                            for(int r = 0; r < 3; ++r) {
+                              const int u = tri.vertex(int(t), r);
+                              if(nbr_start_[u] == nbr_start_[u + 1]) out.emplace_back(int(t), u);
+                            }
+                          }
+                        });
     std::vector<int> inner_count(faces_.size(), 0), inner_point(faces_.size(), -1);
     std::vector<char> located(std::size_t(n_), 0);
-    for(std::size_t t = 0; t < tri.size(); ++t)
-      for(int r = 0; r < 3; ++r) {
-        if(!is_live(int(t))) break;
-        const int u = tri.vertex(int(t), r);
-        if(nbr_start_[u] != nbr_start_[u + 1] || located[u]) continue;
-        const int f = face_of(int(t));
-        if(f < 0) continue;
-        located[u] = 1;
-        ++inner_count[f];
-        inner_point[f] = u;
-      }
+    for(const auto& tu : at_isolated) {
+      const int u = tu.second;
+      if(located[u]) continue;
+      const int f = face_of(tu.first);
+      if(f < 0) continue;
+      located[u] = 1;
+      ++inner_count[f];
+      inner_point[f] = u;
+    }
+    // the programs, blocks of faces in parallel; each block keeps its triangles and counts
     solved_.assign(faces_.size(), 0);
-    for(std::size_t f = 0; f < faces_.size(); ++f)
-      if(faces_[f].size() <= max_face) {
-        face_exact_ = false;
-        solved_[f] = solve_face(faces_[f], -1);
-        if(!solved_[f] && inner_count[f] == 1) solved_[f] = solve_face(faces_[f], inner_point[f]);
-        if(face_exact_) ++exact_faces_;
-      }
+    struct Block_result
+    {
+      std::vector<int> dp_tri;
+      std::size_t one_point_faces = 0, exact_faces = 0, exact_decisions = 0;
+    };
+    const std::size_t face_block = 512;
+    std::vector<Block_result> blocks((faces_.size() + face_block - 1) / face_block);
+    const std::function<bool(const char*, double)> no_progress = [](const char*, double) { return true; };
+    CGAL::MDCS::Parallel_progress<const std::function<bool(const char*, double)>> report(
+      progress ? progress : no_progress, "face dynamic program", faces_.size());
+    par.for_blocks(faces_.size(), face_block, [&](std::size_t f0, std::size_t f1, std::size_t b) {
+      if(report.cancelled()) return;
+      Face_program out{blocks[b].dp_tri, 0, 0, false};
+      for(std::size_t f = f0; f < f1; ++f)
+        if(faces_[f].size() <= max_face) {
+          out.exact = false;
+          solved_[f] = solve_face(faces_[f], -1, out);
+          if(!solved_[f] && inner_count[f] == 1) solved_[f] = solve_face(faces_[f], inner_point[f], out);
+          if(out.exact) ++blocks[b].exact_faces;
+        }
+      blocks[b].one_point_faces = out.one_point_faces;
+      blocks[b].exact_decisions = out.exact_decisions;
+      report.advance(f1 - f0);
+    });
+    report.finish();
+    std::size_t total = 0;
+    for(const Block_result& r : blocks) total += r.dp_tri.size();
+    dp_tri_.reserve(total);
+    for(Block_result& r : blocks) {
+      dp_tri_.insert(dp_tri_.end(), r.dp_tri.begin(), r.dp_tri.end());
+      std::vector<int>().swap(r.dp_tri);
+      one_point_faces_ += r.one_point_faces;
+      exact_faces_ += r.exact_faces;
+      exact_decisions_ += r.exact_decisions;
+    }
   }
 
   std::size_t number_of_faces() const { return faces_.size(); }
@@ -151,26 +201,63 @@ private:
     return nbr_.size();   // not reached: b is a certain neighbour of a
   }
 
-  void trace_faces()
+  // The faces are the cycles of next(h): the half-edge after h = (a -> b) leaves b towards the certain neighbour
+  // just before a in counter-clockwise order. A face is numbered by the rank of its smallest half-edge and its
+  // vertex cycle starts there, which is what a walk over the half-edges in increasing order gives.
+  void trace_faces(const Parallel_stage& par)
   {
-    for(int u = 0; u < n_; ++u)
-      for(std::size_t h0 = nbr_start_[u]; h0 < nbr_start_[u + 1]; ++h0) {
-        if(half_face_[h0] >= 0) continue;
-        std::vector<int> cyc;
-        int a = u;
-        std::size_t h = h0;
-        const int id = int(faces_.size());
-        while(half_face_[h] < 0) {
-          half_face_[h] = id;
-          cyc.push_back(a);
-          // next: at b, the certain neighbour just before a in counter-clockwise order
-          const int b = nbr_[h];
+    const std::size_t H = nbr_.size(), block = 1 << 14;
+    Uninit_vector<std::size_t> next(H);   // written below for every half-edge
+    Uninit_vector<int> source(H);
+    par.for_blocks(std::size_t(n_), 4096, [&](std::size_t u0, std::size_t u1, std::size_t) {
+      for(std::size_t u = u0; u < u1; ++u)
+        for(std::size_t h = nbr_start_[u]; h < nbr_start_[u + 1]; ++h) {
+          const int a = int(u), b = nbr_[h];
           const std::size_t k = half_edge(b, a), b0 = nbr_start_[b], b1 = nbr_start_[b + 1];
-          h = k == b0 ? b1 - 1 : k - 1;
-          a = b;
+          next[h] = k == b0 ? b1 - 1 : k - 1;
+          source[h] = a;
         }
-        faces_.push_back(cyc);
+    });
+    // leaders: the smallest half-edge of each cycle; per block of half-edges, the leaders in increasing order.
+    // A half-edge walks its cycle for at most `cap` steps: a smaller half-edge met means no leader, the start
+    // met again means a leader. The other (long cycles only, e.g. around convex position) are settled
+    // sequentially in increasing order: the first of a long cycle met is its smallest, whose walk marks it.
+    const std::size_t cap = 64;
+    std::vector<std::vector<std::size_t>> leaders((H + block - 1) / block), undecided(leaders.size());
+    par.for_blocks(H, block, [&](std::size_t h0, std::size_t h1, std::size_t b) {
+      for(std::size_t h = h0; h < h1; ++h) {
+        std::size_t g = next[h], steps = 1;
+        while(g != h && g > h && steps < cap) { g = next[g]; ++steps; }
+        if(g == h) leaders[b].push_back(h);
+        else if(g > h) undecided[b].push_back(h);
       }
+    });
+    for(std::size_t b = 0; b < undecided.size(); ++b) {
+      bool added = false;
+      for(std::size_t h : undecided[b]) {
+        if(half_face_[h] != -1) continue;   // on a long cycle seen before
+        std::size_t g = h;
+        do { half_face_[g] = -2; g = next[g]; } while(g != h);
+        leaders[b].push_back(h);
+        added = true;
+      }
+      if(added) std::sort(leaders[b].begin(), leaders[b].end());
+    }
+    std::vector<std::size_t> first_id(leaders.size() + 1, 0);
+    for(std::size_t b = 0; b < leaders.size(); ++b) first_id[b + 1] = first_id[b] + leaders[b].size();
+    faces_.resize(first_id.back());
+    par.for_blocks(leaders.size(), 1, [&](std::size_t b, std::size_t, std::size_t) {
+      for(std::size_t k = 0; k < leaders[b].size(); ++k) {
+        const int id = int(first_id[b] + k);
+        std::vector<int>& cyc = faces_[std::size_t(id)];
+        std::size_t h = leaders[b][k];
+        do {
+          half_face_[h] = id;
+          cyc.push_back(source[h]);
+          h = next[h];
+        } while(h != leaders[b][k]);
+      }
+    });
   }
 
   bool in_cone(const std::vector<int>& F, std::size_t i, std::size_t j) const
@@ -207,7 +294,15 @@ private:
   // point c: Klincsek's program on the chains F[i..j] (indices modulo m, i < j < i + m), then, with c, a
   // cyclic program over the spokes from c: consecutive spokes F[i], F[j] bound the triangle (c, F[i], F[j])
   // and the chain F[i..j] closed by the chord F[i]F[j].
-  bool solve_face(const std::vector<int>& F, int c)
+  // Where a program writes: its triangles (appended) and its counts (one per block of faces).
+  struct Face_program
+  {
+    std::vector<int>& dp_tri;
+    std::size_t one_point_faces, exact_decisions;
+    bool exact;   // some decision of the current face was taken exactly
+  };
+
+  bool solve_face(const std::vector<int>& F, int c, Face_program& out) const
   {
     const std::size_t m = F.size();
     if(m < 3) return false;
@@ -290,8 +385,8 @@ private:
           }
           bk = ck;
           best = cw;
-          face_exact_ = true;
-          ++exact_decisions_;
+          out.exact = true;
+          ++out.exact_decisions;
         }
         if(bk >= 0) { W[id(i, j)] = best + dlen[id(i, j)]; K[id(i, j)] = bk; }
       }
@@ -302,7 +397,7 @@ private:
         stack.pop_back();
         if(ij.second - ij.first < 2) continue;
         const std::size_t k = std::size_t(K[id(ij.first, ij.second)]);
-        dp_tri_.push_back(live_triangle(at(ij.first), at(k), at(ij.second)));
+        out.dp_tri.push_back(live_triangle(at(ij.first), at(k), at(ij.second)));
         stack.emplace_back(ij.first, k);
         stack.emplace_back(k % m, k % m + (ij.second - k));
       }
@@ -374,8 +469,8 @@ private:
           }
           prev[t] = cu;
           D[t] = cv;
-          face_exact_ = true;
-          ++exact_decisions_;
+          out.exact = true;
+          ++out.exact_decisions;
         }
       }
       Dm[s] = D[m];
@@ -393,18 +488,18 @@ private:
         if(cs_s < 0 || compare_length_sums(sg, cs) < 0) { cs_s = int(s); cs.swap(sg); }
       }
       best_s = std::size_t(cs_s);
-      face_exact_ = true;
-      ++exact_decisions_;
+      out.exact = true;
+      ++out.exact_decisions;
     }
     const std::vector<int>& best_prev = prevs[best_s];
     for(std::size_t t = m; t > 0;) {
       const std::size_t u = std::size_t(best_prev[t]);
       const std::size_t i = best_s + u, j = best_s + t;
-      dp_tri_.push_back(live_triangle(c, at(i), at(j)));
+      out.dp_tri.push_back(live_triangle(c, at(i), at(j)));
       emit(i % m, i % m + (j - i));
       t = u;
     }
-    ++one_point_faces_;
+    ++out.one_point_faces;
     return true;
   }
 
@@ -416,12 +511,12 @@ private:
   int n_;
   const Edge_triangles& by_edge_;
   std::vector<std::size_t> nbr_start_;
-  std::vector<int> nbr_, half_face_;
+  Uninit_vector<int> nbr_;
+  std::vector<int> half_face_;
   std::vector<std::vector<int>> faces_;
   std::vector<char> solved_;
   std::vector<int> dp_tri_;
   std::size_t one_point_faces_ = 0, exact_faces_ = 0, exact_decisions_ = 0;
-  bool face_exact_ = false;
 };
 
 } // namespace internal

@@ -10,7 +10,9 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/enum.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Hilbert_sort_base.h>
 #include <CGAL/Hilbert_sort_median_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Parallel_stage_2.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 
@@ -111,10 +113,41 @@ private:
   bool exact_doubles_ = false;   // the kernel's coordinates are these doubles (then a static filter is exact)
 };
 
+// CGAL's median Hilbert sort at run-time orientation: one split of [b, e) by coordinate x (0: x, 1: y), up or down
+template <class Traits, class It>
+It hilbert_split_at(const Traits& k, It b, It e, int x, bool up)
+{
+  switch(2 * x + (up ? 1 : 0)) {
+    case 0: return CGAL::internal::hilbert_split(b, e, CGAL::internal::Hilbert_cmp_2<Traits, 0, false>(k));
+    case 1: return CGAL::internal::hilbert_split(b, e, CGAL::internal::Hilbert_cmp_2<Traits, 0, true>(k));
+    case 2: return CGAL::internal::hilbert_split(b, e, CGAL::internal::Hilbert_cmp_2<Traits, 1, false>(k));
+    default: return CGAL::internal::hilbert_split(b, e, CGAL::internal::Hilbert_cmp_2<Traits, 1, true>(k));
+  }
+}
+
+// ... and the sort of a whole subtree (CGAL's recursive_sort<x, upx, upy>)
+template <class Sorter, class It>
+void hilbert_subtree(const Sorter& sorter, It b, It e, int x, bool upx, bool upy)
+{
+  switch(4 * x + (upx ? 2 : 0) + (upy ? 1 : 0)) {
+    case 0: sorter.template recursive_sort<0, false, false>(b, e); break;
+    case 1: sorter.template recursive_sort<0, false, true>(b, e); break;
+    case 2: sorter.template recursive_sort<0, true, false>(b, e); break;
+    case 3: sorter.template recursive_sort<0, true, true>(b, e); break;
+    case 4: sorter.template recursive_sort<1, false, false>(b, e); break;
+    case 5: sorter.template recursive_sort<1, false, true>(b, e); break;
+    case 6: sorter.template recursive_sort<1, true, false>(b, e); break;
+    default: sorter.template recursive_sort<1, true, true>(b, e); break;
+  }
+}
+
 /// Indices of the points in Hilbert-curve order (CGAL::hilbert_sort, median policy): neighbours in the plane
-/// get close indices. Throws std::invalid_argument on a non-finite coordinate.
+/// get close indices. Throws std::invalid_argument on a non-finite coordinate. In parallel (`par`): the first
+/// levels of CGAL's recursion breadth-first (the splits of a level's sub-squares in parallel), then the
+/// sub-squares' own recursions in parallel; the same splits in the same order, so the same order as CGAL's
+/// sequential sort for every thread count.
 template <class Point_2>
-std::vector<int> hilbert_order(const std::vector<Point_2>& p)
+std::vector<int> hilbert_order(const std::vector<Point_2>& p, const Parallel_stage& par = Parallel_stage())
 {
   typedef typename CGAL::Kernel_traits<Point_2>::Kernel K;
   typedef CGAL::Spatial_sort_traits_adapter_2<K, typename CGAL::Pointer_property_map<Point_2>::const_type> Traits;
@@ -124,8 +157,44 @@ std::vector<int> hilbert_order(const std::vector<Point_2>& p)
   std::vector<int> order(p.size());
   for(std::size_t i = 0; i < p.size(); ++i) order[i] = int(i);
   if(p.empty()) return order;
-  CGAL::Hilbert_sort_median_2<Traits, CGAL::Sequential_tag> sort(Traits(CGAL::make_property_map(p)));
-  sort(order.begin(), order.end());
+  const Traits traits(CGAL::make_property_map(p));
+  typedef CGAL::Hilbert_sort_median_2<Traits, CGAL::Sequential_tag> Sorter;
+  const Sorter sort(traits);
+  if(p.size() < 1 << 15) {
+    sort(order.begin(), order.end());
+    return order;
+  }
+  typedef std::vector<int>::iterator It;
+  struct Frame { std::ptrdiff_t b, e; int x; bool upx, upy; };
+  std::vector<Frame> level{Frame{0, std::ptrdiff_t(p.size()), 0, false, false}};
+  // (the first two levels, one and four sub-squares, count as serial work in the statistics)
+  const Parallel_stage untimed = par.timed(nullptr);
+  while(level.size() < 256) {
+    std::vector<Frame> next(4 * level.size());
+    (level.size() < 16 ? untimed : par).for_blocks(level.size(), 1, [&](std::size_t i, std::size_t, std::size_t) {
+      const Frame f = level[i];
+      const int x = f.x, y = 1 - f.x;
+      const It m0 = order.begin() + f.b, m4 = order.begin() + f.e;
+      It m1 = m0, m2 = m0, m3 = m0;
+      if(f.e - f.b > 1) {   // CGAL's recursive_sort stops at one point
+        m2 = hilbert_split_at(traits, m0, m4, x, f.upx);
+        m1 = hilbert_split_at(traits, m0, m2, y, f.upy);
+        m3 = hilbert_split_at(traits, m2, m4, y, !f.upy);
+      } else {
+        m1 = m2 = m3 = m4;
+      }
+      auto at = [&](It it) { return std::ptrdiff_t(it - order.begin()); };
+      next[4 * i] = Frame{at(m0), at(m1), y, f.upy, f.upx};
+      next[4 * i + 1] = Frame{at(m1), at(m2), x, f.upx, f.upy};
+      next[4 * i + 2] = Frame{at(m2), at(m3), x, f.upx, f.upy};
+      next[4 * i + 3] = Frame{at(m3), at(m4), y, !f.upy, !f.upx};
+    });
+    level.swap(next);
+  }
+  par.for_blocks(level.size(), 1, [&](std::size_t i, std::size_t, std::size_t) {
+    const Frame& f = level[i];
+    hilbert_subtree(sort, order.begin() + f.b, order.begin() + f.e, f.x, f.upx, f.upy);
+  });
   return order;
 }
 
