@@ -58,6 +58,9 @@ def substitute(text, tmp, cgal):
     return text.replace("{in}", os.path.join(HERE, "inputs")).replace("{tmp}", tmp).replace("{cgal}", cgal or "")
 
 
+# How much longer a case may take when mdcs is a sanitizer build (ASan+UBSan at -O1).
+SANITIZER_TIME_FACTOR = 6
+
 def run_case(exe, case, cgal, memory_mib, sanitized):
     if "{cgal}" in case["args"] and not cgal:
         return "skip", "no CGAL mesh folder"
@@ -82,12 +85,15 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
         start = time.monotonic()
         proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp, env=env,
                                 preexec_fn=limits)
+        # A sanitizer build (-O1, instrumented) runs several times slower than Release: its limits are scaled, so
+        # that a limit still separates a slow run from a hang or unbounded work without failing on a busy machine.
+        limit = case["seconds"] * (SANITIZER_TIME_FACTOR if sanitized else 1)
         try:
-            out, err = proc.communicate(timeout=case["seconds"])
+            out, err = proc.communicate(timeout=limit)
         except subprocess.TimeoutExpired:
             os.killpg(proc.pid, signal.SIGKILL)
             proc.communicate()
-            return "fail", f"no exit within {case['seconds']} s (hang or unbounded work)"
+            return "fail", f"no exit within {limit:g} s (hang or unbounded work)"
         elapsed = time.monotonic() - start
         out = out.decode("utf-8", "replace")
         err = err.decode("utf-8", "replace")
