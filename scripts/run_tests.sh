@@ -34,7 +34,7 @@ if [ "$tsan" = 1 ]; then
   cmake -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMDCS_TSAN=ON -DMDCS_BUILD_TESTS=ON \
     -DMDCS_BUILD_CLI=OFF -DMDCS_BUILD_PYTHON=OFF $off >/dev/null
   cmake --build build-tsan -j "$jobs"
-  ctest --test-dir build-tsan --output-on-failure -L tsan
+  ctest --test-dir build-tsan --output-on-failure -j "$jobs" -L tsan
   exit 0
 fi
 
