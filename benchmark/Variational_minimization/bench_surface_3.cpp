@@ -43,6 +43,7 @@
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
 #include "mdcs_bench.h"
+#include <MDCS_test/surface_problems.h>
 
 #include <algorithm>
 #include <array>
@@ -452,10 +453,7 @@ void parallel_for(int n, int jobs, const F& f)
 
 void part_blobs(bool quick, const std::string& prefix, Blob_settings b)
 {
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 1;
-  P.lower_boundary = [](double, double) { return 0.0; };
-  P.upper_boundary = [](double, double) { return 1.0; };
+  const VM::Surface_problem_3 P = MDCS_test::blob_problem();
   const int m = 9, k = 4;
   const VM::Density_weighted_area_functional_3 G = VM::random_blob_functional_3(P, m, k, 0.08, -1.5, 5);
   if(quick) { b.runs = (std::min)(b.runs, 2); b.starts = (std::min)(b.starts, 20); b.rounds = (std::min)(b.rounds, 4);

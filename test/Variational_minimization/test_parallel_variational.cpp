@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/curve_problems.h>
+#include <MDCS_test/surface_problems.h>
 
 #include <CGAL/MDCS/concurrency.h>
 #include <CGAL/Variational_minimization/curve_edge_weights_2.h>
@@ -28,6 +29,8 @@
 #include <vector>
 
 namespace VM = CGAL::Variational_minimization;
+using MDCS_test::blob_planes;
+using MDCS_test::blob_problem;
 
 namespace {
 
@@ -39,24 +42,6 @@ VM::Surface_problem_3 saddle_problem()
   P.boundary_segments_per_side = 2;
   P.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
   return P;
-}
-
-VM::Surface_problem_3 blob_problem()
-{
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 1;
-  P.lower_boundary = [](double, double) { return 0.0; };
-  P.upper_boundary = [](double, double) { return 1.0; };
-  return P;
-}
-
-VM::Surface_plane_options_3 blob_planes(std::uint64_t seed)
-{
-  VM::Surface_plane_options_3 o;
-  o.distribution = VM::Plane_distribution_3::slope_limited;
-  o.max_slope = 2;
-  o.seed = seed;
-  return o;
 }
 
 // A functional without closed form (Gauss quadrature): the area weighted by a smooth density.
