@@ -195,17 +195,8 @@ int main(int argc, char** argv)
                      }});
   if(want("tangent"))
     paths.push_back({"tangent-refinement", std::to_string(n_round) + " planes x 3 rounds", [&](std::size_t t, Stage_time& stage) {
-                       const double a = 1.2;
-                       VM::Surface_problem_3 S;
-                       S.domain = CGAL::Bbox_2(-a, -a, a, a);
-                       S.zmin = -3;
-                       S.zmax = 3;
-                       S.boundary_segments_per_side = 4;
-                       S.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
-                       VM::Surface_plane_options_3 o;
-                       o.distribution = VM::Plane_distribution_3::slope_limited;
-                       o.max_slope = 3;
-                       o.pencil_fraction = 0.2;
+                       const VM::Surface_problem_3 S = MDCS_test::tall_scherk_problem();
+                       const VM::Surface_plane_options_3 o = MDCS_test::tall_scherk_planes();
                        VM::Tangent_refinement_options_3 to;
                        to.rounds = 3;
                        to.threads = t;

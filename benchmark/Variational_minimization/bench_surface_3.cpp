@@ -114,9 +114,7 @@ void part_table22(bool quick, bool large, double budget, const std::string& pref
               "   solve minimize_surface_functional_3(arrangement, problem, G) (weights computed into pseudoflow run on the\n"
               "   arrangement); weights_s and cut_pf_s split that solve. Push-relabel and BK (<= 1.5M cells) run afterwards\n"
               "   on a weight vector, outside the peak.\n\n");
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 4;
-  P.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
+  const VM::Surface_problem_3 P = MDCS_test::saddle_problem(4);
   VM::Surface_plane_options_3 o;
   o.distribution = VM::Plane_distribution_3::isotropic;
   o.pencil_fraction = 0.1;

@@ -63,9 +63,7 @@ TEST_CASE("minimize_surface_functional_3: pseudoflow on the arrangement agrees w
   };
   std::vector<Case> cases;
   cases.push_back({"Scherk, slope-limited", VM::scherk_surface_problem_3(4), VM::Plane_distribution_3::slope_limited, 60});
-  VM::Surface_problem_3 saddle;
-  saddle.boundary_segments_per_side = 3;
-  saddle.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
+  const VM::Surface_problem_3 saddle = MDCS_test::saddle_problem(3);
   cases.push_back({"saddle, isotropic", saddle, VM::Plane_distribution_3::isotropic, 50});
   VM::Surface_problem_3 relaxed;
   relaxed.boundary_segments_per_side = 2;
