@@ -10,6 +10,7 @@
 #include <MDCS_test/geodesic_oracles.h>
 #include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -37,8 +38,8 @@ typedef PG::Exact_geodesic_distances_3<Mesh> Exact;
 typedef Dijkstra::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
-const double inf = std::numeric_limits<double>::infinity();
+using MDCS_test::tolerance;
+using MDCS_test::inf;
 
 typedef MDCS_test::Named_soup<Point_3> Named_soup;
 

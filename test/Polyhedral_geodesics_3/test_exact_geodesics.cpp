@@ -7,6 +7,7 @@
 #include <MDCS_test/geodesic_oracles.h>
 #include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -24,7 +25,7 @@ typedef CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3<Mesh> Geodesics
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
+using MDCS_test::tolerance;
 
 Face_location location(face_descriptor f, const std::array<double, 3>& b) { return Face_location(f, b); }
 
@@ -91,7 +92,7 @@ TEST_CASE("exact geodesics: flat meshes give Euclidean distances everywhere", "[
         sources.push_back(MDCS_test::location_point(m, loc_other.first, loc_other.second));
       }
       auto euclid = [&](const Vec3& p, std::size_t* argmin = nullptr) {
-        double best = MDCS_test::inf();
+        double best = MDCS_test::inf;
         for(std::size_t i = 0; i < sources.size(); ++i)
           if(MDCS_test::dist(p, sources[i]) < best) {
             best = MDCS_test::dist(p, sources[i]);
@@ -113,7 +114,7 @@ TEST_CASE("exact geodesics: flat meshes give Euclidean distances everywhere", "[
         std::size_t arg = 0;
         const Vec3 p = MDCS_test::vertex_vec3(m, v);
         euclid(p, &arg);
-        double second = MDCS_test::inf();
+        double second = MDCS_test::inf;
         for(std::size_t i = 0; i < sources.size(); ++i)
           if(i != arg) second = std::min(second, MDCS_test::dist(p, sources[i]));
         if(second - euclid(p) > 1e-9 * diag && g.nearest_source(v).second != arg)

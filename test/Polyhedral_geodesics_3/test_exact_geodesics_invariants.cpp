@@ -10,6 +10,7 @@
 #include <MDCS_test/geodesic_oracles.h>
 #include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -36,8 +37,8 @@ typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
-const double inf = MDCS_test::inf();
+using MDCS_test::tolerance;
+using MDCS_test::inf;
 
 typedef MDCS_test::Named_soup<Point_3> Named_soup;
 
@@ -69,16 +70,7 @@ std::vector<double> single_source(const Mesh& m, vertex_descriptor s)
   return vertex_distances(g, m);
 }
 
-std::size_t index_of(const Mesh& m, vertex_descriptor v)
-{
-  std::size_t i = 0;
-  for(auto w : vertices(m)) {
-    if(w == v)
-      return i;
-    ++i;
-  }
-  return std::size_t(-1);
-}
+using MDCS_test::index_of;
 
 } // namespace
 

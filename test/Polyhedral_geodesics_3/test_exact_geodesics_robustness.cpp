@@ -8,6 +8,7 @@
 #include <MDCS_test/geodesic_oracles.h>
 #include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -28,13 +29,10 @@ typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
+using MDCS_test::tolerance;
 
 // Vertex i of the mesh built from a soup is the i-th point (Surface_mesh keeps the order).
-vertex_descriptor vertex_at(const Mesh& /*m*/, std::size_t i)
-{
-  return vertex_descriptor(static_cast<Mesh::size_type>(i));
-}
+using MDCS_test::vertex_at;
 
 // Checks the distance at every vertex and at random surface points against the Euclidean distance from
 // the source points (the mesh must be a flat convex domain), and that the paths are finite and as long as the
@@ -44,7 +42,7 @@ void check_flat(Geodesics& g, const Mesh& m, const std::vector<Vec3>& sources, d
   INFO(what);
   const double diag = MDCS_test::bbox_diagonal(m);
   auto euclid = [&](const Vec3& p) {
-    double best = MDCS_test::inf();
+    double best = MDCS_test::inf;
     for(const auto& s : sources) best = std::min(best, MDCS_test::dist(p, s));
     return best;
   };
@@ -78,7 +76,7 @@ void check_flat(Geodesics& g, const Mesh& m, const std::vector<Vec3>& sources, d
     }
     const double len = MDCS_test::path_length(pts);
     const double r = MDCS_test::relative_difference(len, g.distance(v), tolerance * diag);
-    worst = std::max(worst, std::isnan(r) ? MDCS_test::inf() : r);
+    worst = std::max(worst, std::isnan(r) ? MDCS_test::inf : r);
     if(pts.empty() || !(r <= 1e-9)) ++bad_paths;
   }
   INFO("worst relative path length error " << worst << "; exceptions: " << exceptions << " (first: " << first_exception << ")");

@@ -10,6 +10,7 @@
 #include <MDCS_test/geodesic_oracles.h>
 #include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -33,7 +34,7 @@ typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
+using MDCS_test::tolerance;
 
 struct Source
 {
@@ -100,7 +101,7 @@ void check_flat(const Mesh& m, const std::vector<Source>& sources, const std::ve
   INFO(what);
   std::vector<double> e;
   for(vertex_descriptor v : vertices(m)) {
-    double best = MDCS_test::inf();
+    double best = MDCS_test::inf;
     for(const Vec3& p : points) best = std::min(best, MDCS_test::dist(MDCS_test::vertex_vec3(m, v), p));
     e.push_back(best);
   }

@@ -14,6 +14,7 @@
 #include <MDCS_test/geodesic_oracles.h>
 #include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/test_numbers.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -39,7 +40,7 @@ typedef CGAL::Polyhedron_3<K> Polyhedron;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 using MDCS_test::Vec3;
 
-const double pi = 3.14159265358979323846;
+using MDCS_test::pi;
 
 // The nodes of a path as the visitor reports them: kind, point, the faces that contain the node, the vertex
 // (VERTEX) or the edge's end points (EDGE).

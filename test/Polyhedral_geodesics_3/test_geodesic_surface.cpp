@@ -15,6 +15,7 @@
 #include <MDCS_test/geodesic_oracles.h>
 #include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_surface_3.h>
@@ -43,7 +44,7 @@ namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Triangle_soup Soup;
 typedef PG::Geodesic_surface_3<Soup> Soup_surface;
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+using MDCS_test::same_bits;
 
 // The points and triangles of a FaceGraph in its own numbering (vertex and face index maps), the corners of
 // triangle f in the order of Face_location: source(halfedge(f)), target(halfedge(f)), target(next(halfedge(f))).

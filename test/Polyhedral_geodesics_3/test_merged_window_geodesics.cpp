@@ -37,7 +37,7 @@ struct Test_mesh
   Mesh mesh;
 };
 
-std::vector<Test_mesh> curved_meshes()
+std::vector<Test_mesh> curved_test_meshes()
 {
   std::vector<Test_mesh> r;
   r.push_back({"bumpy sphere 3", make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.2, 5))});
@@ -79,7 +79,7 @@ bool load_demo_case(const std::string& name, Demo_case& c)
 
 TEST_CASE("merged windows: tolerance 0 is the exact algorithm, bit for bit", "[geodesics][merged]")
 {
-  for(const auto& tm : curved_meshes()) {
+  for(const auto& tm : curved_test_meshes()) {
     INFO(tm.name);
     const auto sources = MDCS_test::spread_vertices(tm.mesh, 2, 3);
     Exact exact(tm.mesh);
@@ -108,7 +108,7 @@ TEST_CASE("merged windows: tolerance 0 is the exact algorithm, bit for bit", "[g
 
 TEST_CASE("merged windows: one-sided error, monotone in the tolerance", "[geodesics][merged]")
 {
-  for(const auto& tm : curved_meshes()) {
+  for(const auto& tm : curved_test_meshes()) {
     const double mel = mean_edge_length(tm.mesh);
     const vertex_descriptor s = MDCS_test::spread_vertices(tm.mesh, 1, 11)[0];
     Exact exact(tm.mesh, PG::Geodesic_memory_mode::distances_only);
@@ -161,7 +161,7 @@ TEST_CASE("merged windows: one-sided error, monotone in the tolerance", "[geodes
 
 TEST_CASE("merged windows: several sources and a face source, both schedules", "[geodesics][merged]")
 {
-  for(const auto& tm : curved_meshes()) {
+  for(const auto& tm : curved_test_meshes()) {
     const double mel = mean_edge_length(tm.mesh);
     const auto sources = MDCS_test::spread_vertices(tm.mesh, 3, 23);
     const auto f = *faces(tm.mesh).begin();
@@ -273,7 +273,7 @@ TEST_CASE("merged windows: flat meshes stay exact", "[geodesics][merged][flat]")
 
 TEST_CASE("merged windows: paths end at a source, between the exact and the merged distance", "[geodesics][merged][paths]")
 {
-  for(const auto& tm : curved_meshes()) {
+  for(const auto& tm : curved_test_meshes()) {
     const double mel = mean_edge_length(tm.mesh), diag = MDCS_test::bbox_diagonal(tm.mesh);
     const auto sources = MDCS_test::spread_vertices(tm.mesh, 2, 17);
     Exact exact(tm.mesh);

@@ -13,6 +13,8 @@
 #include <MDCS_test/geodesic_oracles.h>
 #include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/thread_counts.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -41,8 +43,8 @@ namespace {
 using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
 namespace PG = CGAL::Polyhedral_geodesics_3;
-const double inf = std::numeric_limits<double>::infinity();
-const std::size_t thread_counts[] = {1, 2, 3, 8};
+using MDCS_test::inf;
+using MDCS_test::thread_counts;
 const PG::Geodesic_method methods[] = {PG::Geodesic_method::exact, PG::Geodesic_method::merged_windows,
                                        PG::Geodesic_method::flat_exact, PG::Geodesic_method::fast_marching,
                                        PG::Geodesic_method::dijkstra};

@@ -7,6 +7,7 @@
 
 #include <MDCS_test/curve_problems.h>
 #include <MDCS_test/surface_problems.h>
+#include <MDCS_test/thread_counts.h>
 
 #include <CGAL/MDCS/concurrency.h>
 #include <CGAL/Variational_minimization/curve_edge_weights_2.h>
@@ -34,7 +35,7 @@ using MDCS_test::blob_problem;
 
 namespace {
 
-const std::size_t thread_counts[] = {1, 2, 3, 8};
+using MDCS_test::thread_counts;
 
 VM::Surface_problem_3 saddle_problem() { return MDCS_test::saddle_problem(2); }
 
