@@ -97,7 +97,14 @@ int run_geodesic_matrix(Invocation& run, const Geodesics_settings& s)
   Geo_mesh mesh;
   std::vector<std::string> notes;
   run.progress.begin("reading the mesh");
-  const bool repaired = load_geodesics_mesh(s.mesh, mesh, notes, s.repair);
+  bool repaired = false;
+  try {
+    repaired = load_geodesics_mesh(s.mesh, mesh, notes, s.repair);
+  } catch(const Input_error& e) {
+    // Surfaces used as given (geodesic_soup.h) have no matrix mode yet: say so, and what works instead.
+    throw Input_error(std::string(e.what()) + " (--matrix needs an oriented manifold mesh; without --matrix, mdcs geodesics "
+                      "computes on such a surface as given with exact, merged:EPS or dijkstra)");
+  }
   run.progress.end();
   for(const std::string& note : notes) std::cerr << "mdcs geodesics: note: " << note << "\n";
   const double seconds_read = seconds_since(t0);
