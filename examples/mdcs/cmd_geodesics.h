@@ -136,38 +136,6 @@ template <> struct Geo_surface_traits<Geo_soup>
 inline Geo_point geo_to_point(const Geo_point& p) { return p; }
 inline Geo_point geo_to_point(const std::array<double, 3>& p) { return Geo_point(p[0], p[1], p[2]); }
 
-// The shape report of a surface used as given (summary.txt, summary.json); nothing for a mesh.
-inline void record_surface_shape(const Geo_mesh&, Geodesics_run&) {}
-inline void record_surface_shape(const Geo_soup& soup, Geodesics_run& run)
-{
-  run.as_given_soup = true;
-  run.nonmanifold_edges = soup.surface->number_of_nonmanifold_edges();
-  run.reversed_edges = soup.surface->number_of_reversed_edges();
-  run.pinched_vertices = soup.surface->number_of_pinched_vertices();
-  run.border_edges = soup.surface->number_of_border_edges();
-}
-
-// The methods and comparisons that cannot run on a surface used as given (exit 3, saying why and what works).
-inline void refuse_unsupported_on_soup(const Geo_mesh&, const Geodesics_settings&) {}
-inline void refuse_unsupported_on_soup(const Geo_soup& soup, const Geodesics_settings& s)
-{
-  const auto& surface = *soup.surface;
-  const std::string alternatives = "; methods that compute on this surface as given: exact, merged:EPS, dijkstra" +
-                                   std::string(surface.has_oriented_manifold_edges() ? ", flat-exact, fmm" : "") + "; or " + repair_hint();
-  const std::string what = "the file is not an oriented manifold mesh (" + soup.problem + ")";
-  if(s.method.is_heat())
-    throw Input_error("--method " + s.method.text + ": CGAL's heat method needs an oriented manifold Surface_mesh, and " + what + alternatives);
-  if((s.method.kind == Geo_method_kind::fmm || s.method.kind == Geo_method_kind::flat_exact) && !surface.has_oriented_manifold_edges())
-    throw Input_error("--method " + s.method.text + ": " + s.method.description() + " need every edge shared by at most two faces with "
-                      "opposite orientations (they unfold a face across an edge into one consistently oriented neighbour), and the "
-                      "surface has " + std::to_string(surface.number_of_nonmanifold_edges()) + " edges of three or more faces and " +
-                      std::to_string(surface.number_of_reversed_edges()) + " edges glued with reversed orientation (" + soup.problem + ")" +
-                      alternatives);
-  if(s.compare_cgal)
-    throw Input_error("--compare-cgal: CGAL's Surface_mesh_shortest_path needs an oriented manifold Surface_mesh, and " + what +
-                      "; --compare-exact works on it");
-}
-
 // The distances of one method of the package (every class shares the facade's interface): sources, limits,
 // propagation, vertex distances (checked), and the distances and shortest paths of the targets, into `run`.
 template <class Geodesics, class Make, class Surface>
@@ -348,10 +316,7 @@ void write_geodesics_outputs(const Surface& mesh, const Geodesics_settings& s, G
   sum << "mesh: " << mesh_name << " (" << run.V << " vertices, " << run.F << " faces";
   if(run.isolated) sum << ", " << run.isolated << " isolated vertices";
   sum << ")\n";
-  if(run.as_given_soup)
-    sum << "surface: used as given, not an oriented manifold mesh: " << run.nonmanifold_edges << " edges of three or more faces, "
-        << run.reversed_edges << " edges glued with reversed orientation, " << run.pinched_vertices << " pinched vertices, "
-        << run.border_edges << " border edges\n";
+  sum << run.surface.text();
   for(const std::string& note : run.notes) sum << "note: " << note << "\n";
   sum << "sources: " << run.sources.size() << " (";
   for(std::size_t i = 0; i < run.sources.size() && i < 8; ++i) sum << (i ? ", " : "") << describe_location(run.sources[i]);
@@ -442,7 +407,7 @@ void write_geodesics_outputs(const Surface& mesh, const Geodesics_settings& s, G
 template <class Surface>
 Geodesics_run run_geodesics_on(const Surface& mesh, const std::string& mesh_name, const std::vector<std::string>& notes,
                                double seconds_read, const Geodesics_settings& s, const Progress_bar& progress,
-                               const Geodesics_run* exact_reference = nullptr)
+                               const Geodesics_run* exact_reference = nullptr, bool repaired = false)
 {
   typedef Geo_surface_traits<Surface> Traits;
   typedef typename Traits::Triangle_mesh TM;
@@ -453,10 +418,10 @@ Geodesics_run run_geodesics_on(const Surface& mesh, const std::string& mesh_name
   run.mesh_name = mesh_name;
   run.notes = notes;
   run.seconds_read = seconds_read;
+  run.surface = geo_surface_shape(mesh, repaired);
   run.V = geo_vertex_count(mesh);
   run.F = geo_face_count(mesh);
   for(std::size_t v = 0; v < run.V; ++v) run.isolated += geo_is_isolated(mesh, v) ? 1 : 0;
-  record_surface_shape(mesh, run);
   refuse_unsupported_on_soup(mesh, s);
 
   if(s.sources.empty()) throw Usage_error("--source is required (vertex indices such as 0,17 or face points f:FACE:B0:B1:B2)");
@@ -620,9 +585,7 @@ inline Geodesics_run run_geodesics(const Geodesics_settings& s, const Progress_b
     return run_geodesics_on(soup, file + " (as given: not an oriented manifold mesh)", notes, seconds_read, s, progress);
   const std::string name = s.mesh[0] == '@' ? s.mesh.substr(1) + " (generated)"
                            : file + (kind == Geo_input_kind::repaired_mesh ? " (repaired by CGAL's soup repair)" : "");
-  Geodesics_run run = run_geodesics_on(mesh, name, notes, seconds_read, s, progress);
-  run.repaired = kind == Geo_input_kind::repaired_mesh;
-  return run;
+  return run_geodesics_on(mesh, name, notes, seconds_read, s, progress, nullptr, kind == Geo_input_kind::repaired_mesh);
 }
 
 } // namespace mdcs_cli

@@ -114,17 +114,7 @@ inline Run_summary_json geodesics_summary_json(const Geodesics_settings& s, cons
   Run_summary_json j;
   j.inputs.add("mesh", s.mesh).add("vertices", (unsigned long long)run.V).add("faces", (unsigned long long)run.F)
     .add("isolated_vertices", (unsigned long long)run.isolated);
-  {
-    // How the surface was used: as the file gives it (a soup that is not an oriented manifold mesh), or a mesh.
-    Json_object surface;
-    surface.add("used_as_given", !run.repaired).add("repaired", run.repaired).add("oriented_manifold_mesh", !run.as_given_soup);
-    if(run.as_given_soup)
-      surface.add("nonmanifold_edges", (unsigned long long)run.nonmanifold_edges)
-        .add("reversed_edges", (unsigned long long)run.reversed_edges)
-        .add("pinched_vertices", (unsigned long long)run.pinched_vertices)
-        .add("border_edges", (unsigned long long)run.border_edges);
-    j.inputs.add("surface", surface);
-  }
+  j.inputs.add("surface", run.surface.json()); // which surface the distances are for
   j.timings.add("read", run.seconds_read).add("setup", run.seconds_setup).add("compute", run.seconds_compute)
     .add("output", run.seconds_output);
   if(run.exact_compared) j.timings.add("exact_reference", run.exact_seconds);

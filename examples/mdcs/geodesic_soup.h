@@ -6,6 +6,7 @@
 #ifndef MDCS_CLI_GEODESIC_SOUP_H
 #define MDCS_CLI_GEODESIC_SOUP_H
 
+#include "geodesics_options.h"
 #include "mesh_input.h"
 
 #include <CGAL/MDCS/IO/read_polygon_soup.h>
@@ -38,6 +39,31 @@ struct Geo_soup
 
 // The vertex range of a soup (vertex indices), for library functions that iterate `vertices(tm)`.
 inline auto vertices(const Geo_soup& s) { return boost::irange<std::size_t>(0, s.points.size()); }
+
+// Which surface the results are for (summary.txt, summary.json's inputs.surface): the file's as given (a soup that
+// is not an oriented manifold mesh, with its shape report), the file's mesh, or the mesh CGAL's repair made of it.
+struct Geo_surface_shape
+{
+  bool as_given_soup = false, repaired = false;
+  std::size_t nonmanifold_edges = 0, reversed_edges = 0, pinched_vertices = 0, border_edges = 0;
+
+  Json_object json() const
+  {
+    Json_object o;
+    o.add("used_as_given", !repaired).add("repaired", repaired).add("oriented_manifold_mesh", !as_given_soup);
+    if(as_given_soup)
+      o.add("nonmanifold_edges", (unsigned long long)nonmanifold_edges).add("reversed_edges", (unsigned long long)reversed_edges)
+        .add("pinched_vertices", (unsigned long long)pinched_vertices).add("border_edges", (unsigned long long)border_edges);
+    return o;
+  }
+  std::string text() const
+  {
+    if(!as_given_soup) return "";
+    return "surface: used as given, not an oriented manifold mesh: " + std::to_string(nonmanifold_edges) + " edges of three or more faces, " +
+           std::to_string(reversed_edges) + " edges glued with reversed orientation, " + std::to_string(pinched_vertices) +
+           " pinched vertices, " + std::to_string(border_edges) + " border edges\n";
+  }
+};
 
 struct Geo_edge_stats
 {
@@ -93,6 +119,44 @@ inline Geo_edge_stats geo_edge_lengths(const Geo_soup& s)
   }
   e.count = edges.size();
   return e;
+}
+
+inline Geo_surface_shape geo_surface_shape(const Geo_mesh&, bool repaired)
+{
+  Geo_surface_shape shape;
+  shape.repaired = repaired;
+  return shape;
+}
+inline Geo_surface_shape geo_surface_shape(const Geo_soup& soup, bool = false)
+{
+  Geo_surface_shape shape;
+  shape.as_given_soup = true;
+  shape.nonmanifold_edges = soup.surface->number_of_nonmanifold_edges();
+  shape.reversed_edges = soup.surface->number_of_reversed_edges();
+  shape.pinched_vertices = soup.surface->number_of_pinched_vertices();
+  shape.border_edges = soup.surface->number_of_border_edges();
+  return shape;
+}
+
+// The methods and comparisons that cannot run on a surface used as given (exit 3, saying why and what works).
+inline void refuse_unsupported_on_soup(const Geo_mesh&, const Geodesics_settings&) {}
+inline void refuse_unsupported_on_soup(const Geo_soup& soup, const Geodesics_settings& s)
+{
+  const auto& surface = *soup.surface;
+  const std::string alternatives = "; methods that compute on this surface as given: exact, merged:EPS, dijkstra" +
+                                   std::string(surface.has_oriented_manifold_edges() ? ", flat-exact, fmm" : "") + "; or " + repair_hint();
+  const std::string what = "the file is not an oriented manifold mesh (" + soup.problem + ")";
+  if(s.method.is_heat())
+    throw Input_error("--method " + s.method.text + ": CGAL's heat method needs an oriented manifold Surface_mesh, and " + what + alternatives);
+  if((s.method.kind == Geo_method_kind::fmm || s.method.kind == Geo_method_kind::flat_exact) && !surface.has_oriented_manifold_edges())
+    throw Input_error("--method " + s.method.text + ": " + s.method.description() + " need every edge shared by at most two faces with "
+                      "opposite orientations (they unfold a face across an edge into one consistently oriented neighbour), and the "
+                      "surface has " + std::to_string(surface.number_of_nonmanifold_edges()) + " edges of three or more faces and " +
+                      std::to_string(surface.number_of_reversed_edges()) + " edges glued with reversed orientation (" + soup.problem + ")" +
+                      alternatives);
+  if(s.compare_cgal)
+    throw Input_error("--compare-cgal: CGAL's Surface_mesh_shortest_path needs an oriented manifold Surface_mesh, and " + what +
+                      "; --compare-exact works on it");
 }
 
 // --- Reading ---------------------------------------------------------------------------------------------------

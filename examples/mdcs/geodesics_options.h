@@ -105,12 +105,12 @@ inline Command_spec geodesics_command_spec()
                             "an oriented manifold mesh (edges shared by 3 or more faces, pinched vertices, faces\n"
                             "oriented against each other, a Moebius strip) is used as given: edges connect the faces\n"
                             "that share their two vertex indices, paths cross into every face of an edge (exact,\n"
-                            "merged:EPS and dijkstra; flat-exact and fmm also with pinched vertices only; the heat\n"
-                            "method and --compare-cgal refuse it, exit 3, saying why); the summary says so and\n"
-                            "counts the special edges and vertices. A malformed file (an index out of range, ...)\n"
-                            "is refused (exit 3). Faces with more than three corners are triangulated (with a\n"
-                            "note). Vertex indices are the file's; face indices the file's for a triangle mesh\n"
-                            "(distances.ply lists the surface as used)."}};
+                            "merged:EPS and dijkstra, also --matrix; flat-exact and fmm also with pinched vertices\n"
+                            "only; the heat method and --compare-cgal refuse it, exit 3, saying why); the summary\n"
+                            "says so and counts the special edges and vertices. A malformed file (an index out of\n"
+                            "range, ...) is refused (exit 3). Faces with more than three corners are triangulated\n"
+                            "(with a note). Vertex indices are the file's; face indices the file's for a triangle\n"
+                            "mesh (distances.ply lists the surface as used)."}};
   s.min_positionals = s.max_positionals = 1;
   s.options = {
     text_option("source", "SPEC", "", "comma-separated sources (required): vertex indices (0,17) and/or surface points\n"
@@ -162,7 +162,7 @@ inline Command_spec geodesics_command_spec()
     "Exit codes: 2 for a malformed or out-of-range --source/--targets, an unknown --method or a surface-point source\n"
     "with the heat method; 3 for a mesh file that is malformed (the message names the line or element), has no\n"
     "face, or is a surface the method cannot handle (not an oriented manifold mesh: heat always, fmm and flat-exact\n"
-    "with edges of 3+ faces or reversed gluings, --compare-cgal, --matrix; degenerate faces: heat); 1 when a\n"
+    "with edges of 3+ faces or reversed gluings, --compare-cgal; degenerate faces: heat); 1 when a\n"
     "result fails its check (a distance that is not finite, a source not at 0).\n";
   return s;
 }

@@ -6,6 +6,7 @@
 
 #include "cli_common.h"
 #include "geodesic_locations.h"
+#include "geodesic_soup.h"
 #include "mesh_input.h"
 
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
@@ -71,10 +72,7 @@ struct Geodesics_run
   std::vector<std::string> files; // every file written, in order
   std::size_t components = 0, components_with_sources = 0; // the heat method: connected components
   std::size_t isolines = 0;                                 // polylines in isolines.csv
-  // A surface used as the file gives it (not an oriented manifold mesh; geodesic_soup.h): its shape report.
-  bool as_given_soup = false;
-  bool repaired = false; // --repair changed the surface (CGAL's soup repair)
-  std::size_t nonmanifold_edges = 0, reversed_edges = 0, pinched_vertices = 0, border_edges = 0;
+  Geo_surface_shape surface; // as given (and its shape report), or repaired (geodesic_soup.h)
 
   // Counts the reachable vertices and finds the farthest one, from `distance`.
   void find_farthest()

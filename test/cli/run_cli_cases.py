@@ -20,6 +20,8 @@ Arguments are split like a shell would (shlex), without a shell. Checks, separat
                              the distance D within TOL (absolute); D = -1 means unreachable
     plydist:PATH=PATH2~TOL   every vertex of PATH has, within TOL, the distance of the same vertex of PATH2 (which
                              may have more vertices: e.g. a double cover that numbers its first sheet like PATH)
+    npyrow:NPY:ROW=PLY~TOL   row ROW of the float64 .npy matrix NPY equals, within TOL, the distances of the PLY
+                             file PLY (inf in the matrix = -1 in the PLY: unreachable)
 
 usage: run_cli_cases.py MDCS_EXECUTABLE CASE_FILE... [--cgal DIR] [--memory-mib N] [--filter TEXT] [--list]
 The memory limit (address space, default 4096 MiB) is not applied to sanitizer builds, whose shadow memory
@@ -79,6 +81,45 @@ def read_ply_distances(path):
             break
     column = properties.index("distance")
     return [float(lines[body + k].split()[column]) for k in range(vertices)]
+
+
+def read_npy_row(path, row):
+    """Row `row` of a 2-D little-endian float64 .npy file in C order (numpy.save's format), without NumPy."""
+    import ast
+    import struct
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:6] != b"\x93NUMPY":
+        raise ValueError("not a .npy file")
+    major = data[6]
+    length, start = (struct.unpack("<H", data[8:10])[0], 10) if major == 1 else (struct.unpack("<I", data[8:12])[0], 12)
+    header = ast.literal_eval(data[start:start + length].decode("latin1"))
+    if header["descr"] != "<f8" or header["fortran_order"] or len(header["shape"]) != 2:
+        raise ValueError(f"unsupported .npy header {header}")
+    rows, columns = header["shape"]
+    if not 0 <= row < rows:
+        raise IndexError(f"row {row} of {rows}")
+    offset = start + length + 8 * columns * row
+    return list(struct.unpack(f"<{columns}d", data[offset:offset + 8 * columns]))
+
+
+def check_npy_row(kind, value, tmp):
+    """The npyrow check (see the module's doc); returns a problem or None."""
+    spec = kind[len("npyrow:"):]
+    try:
+        npy_path, _, rest = spec.partition(":")
+        row, _, ply_path = rest.partition("=")
+        got = read_npy_row(os.path.join(tmp, npy_path), int(row))
+        want = [d if d >= 0 else float("inf") for d in read_ply_distances(os.path.join(tmp, ply_path))]
+        if len(got) != len(want):
+            return f"row {row} of {npy_path} has {len(got)} columns, {ply_path} {len(want)} vertices"
+        tol = float(value)
+        for k, (a, b) in enumerate(zip(got, want)):
+            if not (a == b or abs(a - b) <= tol):
+                return f"{npy_path} ({row}, {k}) is {a!r}, {ply_path} has {b!r} (tolerance {tol:g})"
+        return None
+    except (OSError, ValueError, IndexError, KeyError, SyntaxError) as e:
+        return f"cannot check {spec} ({e})"
 
 
 def check_ply_distances(kind, value, tmp):
@@ -193,6 +234,10 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
                 problems.append(f"file '{value}' should not exist")
             elif kind == "nostderr" and value in err:
                 problems.append(f"stderr has '{value}'")
+            elif kind.startswith("npyrow:"):
+                problem = check_npy_row(kind, value, tmp)
+                if problem:
+                    problems.append(problem)
             elif kind.startswith("plydist:"):
                 problem = check_ply_distances(kind, value, tmp)
                 if problem:
@@ -218,7 +263,7 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
                         problems.append(f"{path}: {key} is {got}, expected {wanted}")
                 except (OSError, ValueError, KeyError, IndexError, TypeError) as e:
                     problems.append(f"{path}: cannot read {key} ({e})")
-            elif kind not in ("stderr", "stdout", "file", "nofile", "fsize", "nostderr") and not kind.startswith(("contains:", "plydist:")):
+            elif kind not in ("stderr", "stdout", "file", "nofile", "fsize", "nostderr") and not kind.startswith(("contains:", "plydist:", "npyrow:")):
                 problems.append(f"unknown check '{check}'")
         if problems:
             tail = "\n      ".join(err.strip().splitlines()[-6:])
