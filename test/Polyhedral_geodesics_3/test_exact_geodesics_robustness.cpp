@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
@@ -21,20 +22,13 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
 const double tolerance = 1e-12;
-
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
 
 // Vertex i of the mesh built from a soup is the i-th point (Surface_mesh keeps the order).
 vertex_descriptor vertex_at(const Mesh& /*m*/, std::size_t i)
@@ -360,10 +354,8 @@ TEST_CASE("exact geodesics robustness: invalid input is rejected", "[geodesics][
 {
   // a quad face
   {
-    Mesh quad;
-    const auto a = quad.add_vertex(Point_3(0, 0, 0)), b = quad.add_vertex(Point_3(1, 0, 0)),
-               c = quad.add_vertex(Point_3(1, 1, 0)), d = quad.add_vertex(Point_3(0, 1, 0));
-    quad.add_face(a, b, c, d);
+    Mesh quad = unit_square_quad();
+    const vertex_descriptor a = vertex_at(quad, 0), b = vertex_at(quad, 1), c = vertex_at(quad, 2);
     CHECK_THROWS_AS(Geodesics(quad), std::invalid_argument);
     std::vector<double> out(4);
     auto dmap = quad.add_property_map<vertex_descriptor, double>("v:d", 0).first;

@@ -13,6 +13,7 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -32,13 +33,8 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Flat_exact_geodesic_distances_3<Mesh> Geodesics;
 typedef PG::Exact_geodesic_distances_3<Mesh> Exact_geodesics;
@@ -46,8 +42,6 @@ typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
 const double tolerance = 1e-12;
-
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
 
 vertex_descriptor vertex_at(std::size_t i) { return vertex_descriptor(static_cast<Mesh::size_type>(i)); }
 
@@ -563,10 +557,7 @@ TEST_CASE("flat-exact geodesics: degenerate meshes", "[geodesics][flat_exact]")
 TEST_CASE("flat-exact geodesics: invalid input is rejected", "[geodesics][flat_exact]")
 {
   {
-    Mesh quad;
-    const auto a = quad.add_vertex(Point_3(0, 0, 0)), b = quad.add_vertex(Point_3(1, 0, 0)),
-               c = quad.add_vertex(Point_3(1, 1, 0)), d = quad.add_vertex(Point_3(0, 1, 0));
-    quad.add_face(a, b, c, d);
+    const Mesh quad = unit_square_quad();
     CHECK_THROWS_AS(Geodesics(quad), std::invalid_argument);
   }
   const Mesh m = make_mesh(MDCS_test::planar_grid<Point_3>(3, 3));

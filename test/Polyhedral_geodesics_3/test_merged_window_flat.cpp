@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
@@ -23,20 +24,11 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Merged_window_geodesic_distances_3<Mesh> Merged;
 
-double mean_edge_length(const Mesh& m)
-{
-  double s = 0;
-  for(auto e : edges(m))
-    s += std::sqrt(CGAL::to_double(CGAL::squared_distance(m.point(source(halfedge(e, m), m)), m.point(target(halfedge(e, m), m)))));
-  return s / double(num_edges(m));
-}
+using MDCS_test::mean_edge_length;
 
 // A regular hexagon fanned from its centre and refined: a convex planar mesh with border vertices of angle 2 pi / 3.
 MDCS_test::Triangle_soup<Point_3> refined_hexagon(std::size_t rings)

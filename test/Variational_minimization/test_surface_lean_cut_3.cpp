@@ -17,6 +17,7 @@
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
 #include <MDCS_test/polygon_geometry.h>
+#include <MDCS_test/surface_problems.h>
 
 #include <algorithm>
 #include <array>
@@ -62,9 +63,7 @@ TEST_CASE("minimize_surface_functional_3: pseudoflow on the arrangement agrees w
   };
   std::vector<Case> cases;
   cases.push_back({"Scherk, slope-limited", VM::scherk_surface_problem_3(4), VM::Plane_distribution_3::slope_limited, 60});
-  VM::Surface_problem_3 saddle;
-  saddle.boundary_segments_per_side = 3;
-  saddle.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
+  const VM::Surface_problem_3 saddle = MDCS_test::saddle_problem(3);
   cases.push_back({"saddle, isotropic", saddle, VM::Plane_distribution_3::isotropic, 50});
   VM::Surface_problem_3 relaxed;
   relaxed.boundary_segments_per_side = 2;
@@ -269,10 +268,7 @@ TEST_CASE("Growable_array_3: matches std::vector through growth, copies, moves a
 TEST_CASE("select_planes_3: planes near the optimum keep the energy non-increasing and are reproducible",
           "[variational][surface]")
 {
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 1;
-  P.lower_boundary = [](double, double) { return 0.0; };
-  P.upper_boundary = [](double, double) { return 1.0; };
+  const VM::Surface_problem_3 P = MDCS_test::blob_problem();
   const VM::Density_weighted_area_functional_3 G = VM::random_blob_functional_3(P, 4, 2, 0.1, -1.5, 3);
   VM::Surface_plane_options_3 o;
   o.distribution = VM::Plane_distribution_3::slope_limited;

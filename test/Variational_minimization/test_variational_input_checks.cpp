@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <MDCS_test/surface_problems.h>
+
 #include <CGAL/Variational_minimization/Curve_problem_2.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/curve_edge_weights_2.h>
@@ -35,13 +37,7 @@ namespace {
 
 const double inf = std::numeric_limits<double>::infinity(), qnan = std::numeric_limits<double>::quiet_NaN();
 
-VM::Surface_problem_3 saddle_problem()
-{
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 4;
-  P.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
-  return P;
-}
+VM::Surface_problem_3 saddle_problem() { return MDCS_test::saddle_problem(4); }
 
 // A surface functional that is finite everywhere but so large that its integral over 25 units of area overflows.
 struct Huge_functional_3
