@@ -7,6 +7,11 @@
 
 namespace mdcs_cli {
 
+// The run on meshes (see the extern declarations in cmd_geodesics.h).
+template Geodesics_run run_geodesics_on<Geo_mesh>(const Geo_mesh&, const std::string&, const std::vector<std::string>&,
+                                                  double, const Geodesics_settings&, const Progress_bar&,
+                                                  const Geodesics_run*, bool);
+
 Command_spec geodesics_spec() { return geodesics_command_spec(); }
 
 int run_geodesics_command(Invocation& run)

@@ -566,6 +566,18 @@ Geodesics_run run_geodesics_on(const Surface& mesh, const std::string& mesh_name
   write_geodesics_outputs(mesh, s, run, progress);
   return run;
 }
+// The two runs are compiled once each, in their own translation units (cmd_geodesics.cpp: meshes,
+// cmd_geodesics_soup.cpp: soups), not in every file that calls them (the demo does): each instantiates every
+// geodesic class with its paths and outputs, the largest compile of the tool, and two units build in parallel.
+extern template Geodesics_run run_geodesics_on<Geo_mesh>(const Geo_mesh&, const std::string&,
+                                                         const std::vector<std::string>&, double,
+                                                         const Geodesics_settings&, const Progress_bar&,
+                                                         const Geodesics_run*, bool);
+extern template Geodesics_run run_geodesics_on<Geo_soup>(const Geo_soup&, const std::string&,
+                                                         const std::vector<std::string>&, double,
+                                                         const Geodesics_settings&, const Progress_bar&,
+                                                         const Geodesics_run*, bool);
+
 inline Geodesics_run run_geodesics(const Geodesics_settings& s, const Progress_bar& progress)
 {
   // Parse the sources and targets before reading the mesh, so that a malformed command line fails at once.
