@@ -483,14 +483,16 @@ void geodesic_distance_rows(const Geodesic_surface_3<TriangleMesh, double, Verte
   (`const std::vector<std::uint32_t>&` of vertex indices, increasing, the source itself included with distance 0;
   `const std::vector<double>&`), in the order of the sources, one row at a time.
 
-  **Cost.** Each source costs what its neighbourhood costs, never the size of the mesh: the propagation runs on the
-  faces within Euclidean distance `max_distance` of the source (twice that for `fast_marching` and `flat_exact`,
-  whose values are estimates that may undercut a path's length), copied into a small compact mesh with the
-  original records; nothing of the whole mesh's size is cleared per source. Paths of length at most `max_distance`
-  stay inside that ball, so the exact methods and Dijkstra give the distances of a run on the whole mesh stopped at
-  `max_distance` (up to rounding: the same records, faces and vertices in the same order; the exact methods run
-  their faster vertex-oriented schedule on the neighbourhood, which agrees with the window propagation of a
-  limited run to about 1e-15 relative; the tests compare).
+  **Cost.** Each source costs what its neighbourhood costs, never the size of the mesh. The exact method runs its
+  vertex-oriented schedule on the whole mesh stopped at `max_distance`, one engine per thread reused from source to
+  source (each run resets only what the previous one touched; nothing is allocated per source). The other methods
+  (and the exact one on a mesh with zero-area faces or non-manifold or reversed edges) run on the faces within
+  Euclidean distance `max_distance` of the source (twice that for `fast_marching` and `flat_exact`, whose values are
+  estimates that may undercut a path's length), copied into a small compact mesh with the original records; nothing
+  of the whole mesh's size is cleared per source. Paths of length at most `max_distance` stay inside that ball, so
+  the exact methods and Dijkstra give the distances of a run on the whole mesh stopped at `max_distance` (up to
+  rounding: the exact methods run their faster vertex-oriented schedule, which agrees with the window propagation
+  of a limited run of `Exact_geodesic_distances_3` to about 1e-15 relative; the tests compare).
 
   Threads, memory, progress and errors as in `geodesic_distance_rows()` (stage `"local geodesic distance matrix"`).
   Each row is directed (from its source): for a symmetric matrix see `symmetric_local_geodesic_distance_matrix()`.
