@@ -14,6 +14,7 @@
 //   bench_parallel_variational [--threads 1,2] [--runs N] [--planes N] [--parts weights,refine,restarts,basin,tangent]
 //                              [--quick] [--csv FILE]
 #include <mdcs_bench.h>
+#include <MDCS_test/surface_problems.h>
 
 #include <CGAL/MDCS/concurrency.h>
 #include <CGAL/Variational_minimization/monte_carlo_functional_3.h>
@@ -37,6 +38,8 @@
 #include <vector>
 
 namespace VM = CGAL::Variational_minimization;
+using MDCS_test::blob_planes;
+using MDCS_test::blob_problem;
 using mdcs_bench::fmt;
 
 namespace {
@@ -47,24 +50,6 @@ std::string load_line()
   std::string a, b, c;
   in >> a >> b >> c;
   return a + " " + b + " " + c;
-}
-
-VM::Surface_problem_3 blob_problem()
-{
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 1;
-  P.lower_boundary = [](double, double) { return 0.0; };
-  P.upper_boundary = [](double, double) { return 1.0; };
-  return P;
-}
-
-VM::Surface_plane_options_3 blob_planes(std::uint64_t seed)
-{
-  VM::Surface_plane_options_3 o;
-  o.distribution = VM::Plane_distribution_3::slope_limited;
-  o.max_slope = 2;
-  o.seed = seed;
-  return o;
 }
 
 // The CPU and wall times of the parallel stage of a run (between the first and the last progress call of the stage).
@@ -210,17 +195,8 @@ int main(int argc, char** argv)
                      }});
   if(want("tangent"))
     paths.push_back({"tangent-refinement", std::to_string(n_round) + " planes x 3 rounds", [&](std::size_t t, Stage_time& stage) {
-                       const double a = 1.2;
-                       VM::Surface_problem_3 S;
-                       S.domain = CGAL::Bbox_2(-a, -a, a, a);
-                       S.zmin = -3;
-                       S.zmax = 3;
-                       S.boundary_segments_per_side = 4;
-                       S.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
-                       VM::Surface_plane_options_3 o;
-                       o.distribution = VM::Plane_distribution_3::slope_limited;
-                       o.max_slope = 3;
-                       o.pencil_fraction = 0.2;
+                       const VM::Surface_problem_3 S = MDCS_test::tall_scherk_problem();
+                       const VM::Surface_plane_options_3 o = MDCS_test::tall_scherk_planes();
                        VM::Tangent_refinement_options_3 to;
                        to.rounds = 3;
                        to.threads = t;

@@ -43,6 +43,7 @@
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
 #include "mdcs_bench.h"
+#include <MDCS_test/surface_problems.h>
 
 #include <algorithm>
 #include <array>
@@ -113,9 +114,7 @@ void part_table22(bool quick, bool large, double budget, const std::string& pref
               "   solve minimize_surface_functional_3(arrangement, problem, G) (weights computed into pseudoflow run on the\n"
               "   arrangement); weights_s and cut_pf_s split that solve. Push-relabel and BK (<= 1.5M cells) run afterwards\n"
               "   on a weight vector, outside the peak.\n\n");
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 4;
-  P.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
+  const VM::Surface_problem_3 P = MDCS_test::saddle_problem(4);
   VM::Surface_plane_options_3 o;
   o.distribution = VM::Plane_distribution_3::isotropic;
   o.pencil_fraction = 0.1;
@@ -452,10 +451,7 @@ void parallel_for(int n, int jobs, const F& f)
 
 void part_blobs(bool quick, const std::string& prefix, Blob_settings b)
 {
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 1;
-  P.lower_boundary = [](double, double) { return 0.0; };
-  P.upper_boundary = [](double, double) { return 1.0; };
+  const VM::Surface_problem_3 P = MDCS_test::blob_problem();
   const int m = 9, k = 4;
   const VM::Density_weighted_area_functional_3 G = VM::random_blob_functional_3(P, m, k, 0.08, -1.5, 5);
   if(quick) { b.runs = (std::min)(b.runs, 2); b.starts = (std::min)(b.starts, 20); b.rounds = (std::min)(b.rounds, 4);

@@ -13,6 +13,7 @@
 #include "geodesic_render.h"
 #include "geodesics_options.h"
 #include "geodesics_results.h"
+#include "geodesic_soup.h"
 #include "mesh_input.h"
 
 #include <CGAL/Polyhedral_geodesics_3.h>
@@ -26,6 +27,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_shortest_path.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -34,6 +37,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace mdcs_cli {
@@ -72,18 +76,76 @@ struct Path_sequence_recorder
   }
 };
 
+// The same for a soup (the visitor of Triangle_soup: vertex indices, soup half-edges, faces with their weights
+// in the order of the triangle's corners, which is the listing order).
+struct Soup_path_recorder
+{
+  std::vector<Geo_path_node>& nodes;
+
+  void operator()(std::size_t v)
+  {
+    Geo_path_node n;
+    n.kind = Geo_path_node::vertex;
+    n.index = v;
+    nodes.push_back(n);
+  }
+  void operator()(const PG::Triangle_soup_halfedge& h, double t)
+  {
+    Geo_path_node n;
+    n.kind = Geo_path_node::edge;
+    n.a = h.source;
+    n.b = h.target;
+    n.t = t;
+    nodes.push_back(n);
+  }
+  void operator()(std::size_t f, const std::array<double, 3>& b)
+  {
+    Geo_path_node n;
+    n.kind = Geo_path_node::face;
+    n.index = f;
+    n.weights = b;
+    nodes.push_back(n);
+  }
+};
+
+// What the geodesic classes need from each kind of surface: the mesh type they are templated on, what their
+// constructors take, vertex descriptors, face locations, the vertex index map, and the path visitor.
+template <class Surface> struct Geo_surface_traits
+{
+  typedef Geo_mesh Triangle_mesh;
+  static const Geo_mesh& solver_input(const Geo_mesh& m) { return m; }
+  static Geo_mesh::Vertex_index vertex(std::size_t i) { return Geo_mesh::Vertex_index(Geo_mesh::size_type(i)); }
+  // Face_location coordinates refer to source(h), target(h), target(next(h)) of h = halfedge(f).
+  static std::pair<Geo_mesh::Face_index, std::array<double, 3>> face_location(const Geo_location& loc)
+  {
+    return {Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)), face_location_weights(loc)};
+  }
+  static auto index_map(const Geo_mesh& m) { return get(boost::vertex_index, m); }
+  static Path_sequence_recorder recorder(const Geo_mesh& m, std::vector<Geo_path_node>& nodes) { return {m, nodes}; }
+};
+template <> struct Geo_surface_traits<Geo_soup>
+{
+  typedef PG::Triangle_soup Triangle_mesh;
+  static const auto& solver_input(const Geo_soup& s) { return s.surface; }
+  static std::size_t vertex(std::size_t i) { return i; }
+  static std::pair<std::size_t, std::array<double, 3>> face_location(const Geo_location& loc) { return {loc.index, loc.weights}; }
+  static boost::typed_identity_property_map<std::size_t> index_map(const Geo_soup&) { return {}; }
+  static Soup_path_recorder recorder(const Geo_soup&, std::vector<Geo_path_node>& nodes) { return {nodes}; }
+};
+
+inline Geo_point geo_to_point(const Geo_point& p) { return p; }
+inline Geo_point geo_to_point(const std::array<double, 3>& p) { return Geo_point(p[0], p[1], p[2]); }
+
 // The distances of one method of the package (every class shares the facade's interface): sources, limits,
 // propagation, vertex distances (checked), and the distances and shortest paths of the targets, into `run`.
-template <class Geodesics, class Make>
-void run_geodesic_class(Make make, const Geo_mesh& mesh, const Geodesics_settings& s, const std::vector<Geo_location>& targets,
+template <class Geodesics, class Make, class Surface>
+void run_geodesic_class(Make make, const Surface& mesh, const Geodesics_settings& s, const std::vector<Geo_location>& targets,
                         Geodesics_run& run, const Progress_bar& progress)
 {
+  typedef Geo_surface_traits<Surface> Traits;
   const double inf = std::numeric_limits<double>::infinity();
-  auto vertex = [](std::size_t i) { return Geo_mesh::Vertex_index(Geo_mesh::size_type(i)); };
-  auto face_location = [](const Geo_location& loc) {
-    const auto w = face_location_weights(loc);
-    return typename Geodesics::Face_location(Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)), {{w[0], w[1], w[2]}});
-  };
+  auto vertex = [](std::size_t i) { return Traits::vertex(i); };
+  auto face_location = [](const Geo_location& loc) { return typename Geodesics::Face_location(Traits::face_location(loc)); };
 
   // The propagation.
   const auto t_setup = std::chrono::steady_clock::now();
@@ -95,10 +157,10 @@ void run_geodesic_class(Make make, const Geo_mesh& mesh, const Geodesics_setting
   }
   if(s.limit >= 0) geodesics.set_distance_limit(s.limit);
   if(s.stop_at_targets) {
-    std::vector<Geo_mesh::Vertex_index> stop;
+    std::vector<typename Geodesics::vertex_descriptor> stop;
     for(const Geo_location& loc : targets) {
       if(loc.at_vertex) stop.push_back(vertex(loc.index));
-      else for(auto c : face_corners(mesh, Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)))) stop.push_back(c);
+      else for(std::size_t c : geo_triangle(mesh, loc.index)) stop.push_back(vertex(c));
     }
     geodesics.set_stop_targets(stop);
   }
@@ -110,7 +172,7 @@ void run_geodesic_class(Make make, const Geo_mesh& mesh, const Geodesics_setting
   run.stats = geodesics.statistics();
 
   std::vector<double> field(run.V, inf);
-  geodesics.distances(boost::make_iterator_property_map(field.begin(), get(boost::vertex_index, mesh)));
+  geodesics.distances(boost::make_iterator_property_map(field.begin(), Traits::index_map(mesh)));
   run.distance = field;
   check_geodesic_distances(mesh, run, s.method.class_name());
   run.find_farthest();
@@ -128,12 +190,13 @@ void run_geodesic_class(Make make, const Geo_mesh& mesh, const Geodesics_setting
     if(s.full_field && std::isfinite(r.distance)) {
       // A failure of the path tracing is reported for this target; the distances and the other paths stay useful.
       try {
-        Path_sequence_recorder recorder{mesh, r.sequence};
+        auto recorder = Traits::recorder(mesh, r.sequence);
+        auto points = boost::make_function_output_iterator([&r](const auto& p) { r.path.push_back(geo_to_point(p)); });
         if(loc.at_vertex) {
-          geodesics.shortest_path_points(vertex(loc.index), std::back_inserter(r.path));
+          geodesics.shortest_path_points(vertex(loc.index), points);
           if(s.export_data) geodesics.shortest_path_sequence(vertex(loc.index), recorder);
         } else {
-          geodesics.shortest_path_points(face_location(loc), std::back_inserter(r.path));
+          geodesics.shortest_path_points(face_location(loc), points);
           if(s.export_data) geodesics.shortest_path_sequence(face_location(loc), recorder);
         }
       } catch(const std::exception& e) {
@@ -179,7 +242,8 @@ void run_heat_method(const Geo_mesh& mesh, const Geodesics_settings& s, const st
 }
 
 // The files of a run (distances.ply, paths, iso-lines, the picture, summary.txt) and the summary text.
-inline void write_geodesics_outputs(const Geo_mesh& mesh, const Geodesics_settings& s, Geodesics_run& run, const Progress_bar& progress)
+template <class Surface>
+void write_geodesics_outputs(const Surface& mesh, const Geodesics_settings& s, Geodesics_run& run, const Progress_bar& progress)
 {
   progress.begin("writing the outputs");
   const Geo_method& method = s.method;
@@ -188,11 +252,8 @@ inline void write_geodesics_outputs(const Geo_mesh& mesh, const Geodesics_settin
   const std::filesystem::path folder = prepare_output_folder(s.output);
   Geodesic_picture pic;
   pic.points.resize(run.V);
-  for(Geo_mesh::Vertex_index v : mesh.vertices()) pic.points[v.idx()] = geo_detail::vec(mesh.point(v));
-  for(Geo_mesh::Face_index f : mesh.faces()) {
-    const auto c = face_corners(mesh, f);
-    pic.triangles.push_back({{c[0].idx(), c[1].idx(), c[2].idx()}});
-  }
+  for(std::size_t v = 0; v < run.V; ++v) pic.points[v] = geo_detail::vec(geo_vertex_point(mesh, v));
+  for(std::size_t f = 0; f < run.F; ++f) pic.triangles.push_back(geo_triangle(mesh, f));
   pic.distance = run.distance;
   pic.max_distance = run.max_distance;
   run.ply = (folder / "distances.ply").string();
@@ -255,6 +316,7 @@ inline void write_geodesics_outputs(const Geo_mesh& mesh, const Geodesics_settin
   sum << "mesh: " << mesh_name << " (" << run.V << " vertices, " << run.F << " faces";
   if(run.isolated) sum << ", " << run.isolated << " isolated vertices";
   sum << ")\n";
+  sum << run.surface.text();
   for(const std::string& note : run.notes) sum << "note: " << note << "\n";
   sum << "sources: " << run.sources.size() << " (";
   for(std::size_t i = 0; i < run.sources.size() && i < 8; ++i) sum << (i ? ", " : "") << describe_location(run.sources[i]);
@@ -342,19 +404,25 @@ inline void write_geodesics_outputs(const Geo_mesh& mesh, const Geodesics_settin
 // Runs everything on a mesh that is already loaded (the demo loads it to choose its sources). With
 // --compare-exact, `exact_reference` (when given: a run of the exact method on the same mesh and settings)
 // saves the second propagation.
-inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& mesh_name, const std::vector<std::string>& notes,
-                                      double seconds_read, const Geodesics_settings& s, const Progress_bar& progress,
-                                      const Geodesics_run* exact_reference = nullptr)
+template <class Surface>
+Geodesics_run run_geodesics_on(const Surface& mesh, const std::string& mesh_name, const std::vector<std::string>& notes,
+                               double seconds_read, const Geodesics_settings& s, const Progress_bar& progress,
+                               const Geodesics_run* exact_reference = nullptr, bool repaired = false)
 {
+  typedef Geo_surface_traits<Surface> Traits;
+  typedef typename Traits::Triangle_mesh TM;
+  const auto& input = Traits::solver_input(mesh);
   const double inf = std::numeric_limits<double>::infinity();
   const Geo_method& method = s.method;
   Geodesics_run run;
   run.mesh_name = mesh_name;
   run.notes = notes;
   run.seconds_read = seconds_read;
-  run.V = mesh.number_of_vertices();
-  run.F = mesh.number_of_faces();
-  for(Geo_mesh::Vertex_index v : mesh.vertices()) run.isolated += mesh.is_isolated(v) ? 1 : 0;
+  run.surface = geo_surface_shape(mesh, repaired);
+  run.V = geo_vertex_count(mesh);
+  run.F = geo_face_count(mesh);
+  for(std::size_t v = 0; v < run.V; ++v) run.isolated += geo_is_isolated(mesh, v) ? 1 : 0;
+  refuse_unsupported_on_soup(mesh, s);
 
   if(s.sources.empty()) throw Usage_error("--source is required (vertex indices such as 0,17 or face points f:FACE:B0:B1:B2)");
   run.sources = parse_geo_locations(s.sources, "source");
@@ -372,39 +440,39 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
       throw Input_error("the heat method needs a mesh without isolated vertices (" + std::to_string(run.isolated) + " found)");
   }
 
-  for(Geo_mesh::Edge_index e : mesh.edges()) run.mean_edge_length += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1))));
-  if(mesh.number_of_edges() > 0) run.mean_edge_length /= double(mesh.number_of_edges());
+  run.mean_edge_length = geo_edge_lengths(mesh).mean();
   run.merge_tolerance = method.merge_eps * run.mean_edge_length;
 
   // The distances.
   typedef PG::Geodesic_memory_mode Mode;
   switch(method.kind) {
   case Geo_method_kind::exact:
-    run_geodesic_class<PG::Exact_geodesic_distances_3<Geo_mesh>>(
-      [&](Mode mode) { return PG::Exact_geodesic_distances_3<Geo_mesh>(mesh, mode); }, mesh, s, targets, run, progress);
+    run_geodesic_class<PG::Exact_geodesic_distances_3<TM>>(
+      [&](Mode mode) { return PG::Exact_geodesic_distances_3<TM>(input, mode); }, mesh, s, targets, run, progress);
     break;
   case Geo_method_kind::merged:
-    run_geodesic_class<PG::Merged_window_geodesic_distances_3<Geo_mesh>>(
-      [&](Mode mode) { return PG::Merged_window_geodesic_distances_3<Geo_mesh>(mesh, run.merge_tolerance, mode); }, mesh, s, targets, run,
+    run_geodesic_class<PG::Merged_window_geodesic_distances_3<TM>>(
+      [&](Mode mode) { return PG::Merged_window_geodesic_distances_3<TM>(input, run.merge_tolerance, mode); }, mesh, s, targets, run,
       progress);
     break;
   case Geo_method_kind::flat_exact:
-    run_geodesic_class<PG::Flat_exact_geodesic_distances_3<Geo_mesh>>(
-      [&](Mode mode) { return PG::Flat_exact_geodesic_distances_3<Geo_mesh>(mesh, mode); }, mesh, s, targets, run, progress);
+    run_geodesic_class<PG::Flat_exact_geodesic_distances_3<TM>>(
+      [&](Mode mode) { return PG::Flat_exact_geodesic_distances_3<TM>(input, mode); }, mesh, s, targets, run, progress);
     break;
   case Geo_method_kind::fmm:
-    run_geodesic_class<PG::Fast_marching_geodesic_distances_3<Geo_mesh>>(
-      [&](Mode mode) { return PG::Fast_marching_geodesic_distances_3<Geo_mesh>(mesh, mode); }, mesh, s, targets, run, progress);
+    run_geodesic_class<PG::Fast_marching_geodesic_distances_3<TM>>(
+      [&](Mode mode) { return PG::Fast_marching_geodesic_distances_3<TM>(input, mode); }, mesh, s, targets, run, progress);
     break;
   case Geo_method_kind::dijkstra:
-    run_geodesic_class<PG::Dijkstra_geodesic_distances_3<Geo_mesh>>(
-      [&](Mode mode) { return PG::Dijkstra_geodesic_distances_3<Geo_mesh>(mesh, mode); }, mesh, s, targets, run, progress);
+    run_geodesic_class<PG::Dijkstra_geodesic_distances_3<TM>>(
+      [&](Mode mode) { return PG::Dijkstra_geodesic_distances_3<TM>(input, mode); }, mesh, s, targets, run, progress);
     break;
   case Geo_method_kind::heat:
-    run_heat_method<CGAL::Heat_method_3::Direct>(mesh, s, targets, run, progress);
-    break;
   case Geo_method_kind::heat_idt:
-    run_heat_method<CGAL::Heat_method_3::Intrinsic_Delaunay>(mesh, s, targets, run, progress);
+    if constexpr(std::is_same<Surface, Geo_mesh>::value) { // refused on soups above
+      if(method.kind == Geo_method_kind::heat) run_heat_method<CGAL::Heat_method_3::Direct>(mesh, s, targets, run, progress);
+      else run_heat_method<CGAL::Heat_method_3::Intrinsic_Delaunay>(mesh, s, targets, run, progress);
+    }
     break;
   }
 
@@ -419,36 +487,37 @@ inline Geodesics_run run_geodesics_on(const Geo_mesh& mesh, const std::string& m
       run.exact_seconds = exact_reference->seconds_setup + exact_reference->seconds_compute;
     } else {
       const auto t_exact = std::chrono::steady_clock::now();
-      PG::Exact_geodesic_distances_3<Geo_mesh> geodesics(mesh, PG::Geodesic_memory_mode::distances_only);
+      typedef PG::Exact_geodesic_distances_3<TM> Exact;
+      Exact geodesics(input, PG::Geodesic_memory_mode::distances_only);
       for(const Geo_location& loc : run.sources) {
-        const auto w = face_location_weights(loc);
-        if(loc.at_vertex) geodesics.add_source(Geo_mesh::Vertex_index(Geo_mesh::size_type(loc.index)));
-        else geodesics.add_source(PG::Exact_geodesic_distances_3<Geo_mesh>::Face_location(Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)), {{w[0], w[1], w[2]}}));
+        if(loc.at_vertex) geodesics.add_source(Traits::vertex(loc.index));
+        else geodesics.add_source(typename Exact::Face_location(Traits::face_location(loc)));
       }
       if(s.limit >= 0) geodesics.set_distance_limit(s.limit);
       if(s.stop_at_targets) {
-        std::vector<Geo_mesh::Vertex_index> stop;
+        std::vector<typename Exact::vertex_descriptor> stop;
         for(const Geo_location& loc : targets) {
-          if(loc.at_vertex) stop.push_back(Geo_mesh::Vertex_index(Geo_mesh::size_type(loc.index)));
-          else for(auto c : face_corners(mesh, Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)))) stop.push_back(c);
+          if(loc.at_vertex) stop.push_back(Traits::vertex(loc.index));
+          else for(std::size_t c : geo_triangle(mesh, loc.index)) stop.push_back(Traits::vertex(c));
         }
         geodesics.set_stop_targets(stop);
       }
       geodesics.compute([&](const char*, double fraction) { return progress("exact propagation (--compare-exact)", fraction); });
       progress.end();
       exact.assign(run.V, inf);
-      geodesics.distances(boost::make_iterator_property_map(exact.begin(), get(boost::vertex_index, mesh)));
+      geodesics.distances(boost::make_iterator_property_map(exact.begin(), Traits::index_map(mesh)));
       run.exact_seconds = seconds_since(t_exact);
     }
     run.exact_compared = true;
-    const auto index = get(boost::vertex_index, mesh);
+    const auto index = Traits::index_map(mesh);
     run.error = PG::geodesic_distance_error(mesh, boost::make_iterator_property_map(run.distance.cbegin(), index),
                                             boost::make_iterator_property_map(exact.cbegin(), index));
     for(auto& t : run.targets)
       if(t.where.at_vertex) t.exact_distance = exact[t.where.index];
   }
 
-  // CGAL's Surface_mesh_shortest_path on the same sources, for comparison.
+  // CGAL's Surface_mesh_shortest_path on the same sources, for comparison (refused on soups above).
+  if constexpr(std::is_same<Surface, Geo_mesh>::value)
   if(s.compare_cgal) {
     typedef CGAL::Surface_mesh_shortest_path_traits<Geo_kernel, Geo_mesh> Smsp_traits;
     typedef CGAL::Surface_mesh_shortest_path<Smsp_traits> Smsp;
@@ -504,15 +573,19 @@ inline Geodesics_run run_geodesics(const Geodesics_settings& s, const Progress_b
   parse_geo_locations(s.targets, "targets");
   const auto t0 = std::chrono::steady_clock::now();
   Geo_mesh mesh;
+  Geo_soup soup;
   std::vector<std::string> notes;
   progress.begin("reading the mesh");
-  const bool repaired = load_geodesics_mesh(s.mesh, mesh, notes, s.repair);
+  const Geo_input_kind kind = load_geodesics_input(s.mesh, mesh, soup, notes, s.repair);
   progress.end();
   for(const std::string& note : notes) std::cerr << "mdcs geodesics: note: " << note << "\n";
   const double seconds_read = seconds_since(t0);
+  const std::string file = std::filesystem::path(s.mesh).filename().string();
+  if(kind == Geo_input_kind::soup)
+    return run_geodesics_on(soup, file + " (as given: not an oriented manifold mesh)", notes, seconds_read, s, progress);
   const std::string name = s.mesh[0] == '@' ? s.mesh.substr(1) + " (generated)"
-                           : std::filesystem::path(s.mesh).filename().string() + (repaired ? " (repaired by CGAL's soup repair)" : "");
-  return run_geodesics_on(mesh, name, notes, seconds_read, s, progress);
+                           : file + (kind == Geo_input_kind::repaired_mesh ? " (repaired by CGAL's soup repair)" : "");
+  return run_geodesics_on(mesh, name, notes, seconds_read, s, progress, nullptr, kind == Geo_input_kind::repaired_mesh);
 }
 
 } // namespace mdcs_cli

@@ -59,7 +59,8 @@ inline std::string json_path_node(const Geo_path_node& n)
 // paths.json: the sources, and per target its distance, the path's length, its points (target first, source last)
 // and the same path as mesh locations ("vertex": v | "edge": [a, b], "t": t for the point (1-t) a + t b |
 // "face": f, "weights": the corners' weights in listing order). Unreachable targets have distance null and no path.
-inline void write_paths_json(const std::string& file, const Geodesics_run& run, const Geo_mesh& mesh)
+template <class Surface>
+void write_paths_json(const std::string& file, const Geodesics_run& run, const Surface& mesh)
 {
   Output_file out(file);
   out << "{\n  \"mesh\": " << json_string(run.mesh_name) << ",\n  \"sources\": [";
@@ -113,6 +114,7 @@ inline Run_summary_json geodesics_summary_json(const Geodesics_settings& s, cons
   Run_summary_json j;
   j.inputs.add("mesh", s.mesh).add("vertices", (unsigned long long)run.V).add("faces", (unsigned long long)run.F)
     .add("isolated_vertices", (unsigned long long)run.isolated);
+  j.inputs.add("surface", run.surface.json()); // which surface the distances are for
   j.timings.add("read", run.seconds_read).add("setup", run.seconds_setup).add("compute", run.seconds_compute)
     .add("output", run.seconds_output);
   if(run.exact_compared) j.timings.add("exact_reference", run.exact_seconds);

@@ -4,6 +4,7 @@
 #define MDCS_CLI_GEODESIC_LOCATIONS_H
 
 #include "cli_common.h"
+#include "geodesic_soup.h"
 #include "mesh_input.h"
 
 #include <array>
@@ -74,18 +75,21 @@ inline std::vector<Geo_location> parse_geo_locations(const std::string& spec, co
   return result;
 }
 
-inline void validate_geo_locations(const Geo_mesh& m, const std::vector<Geo_location>& locations, const char* option)
+// A Geo_mesh or a Geo_soup (geodesic_soup.h).
+template <class Surface>
+void validate_geo_locations(const Surface& m, const std::vector<Geo_location>& locations, const char* option)
 {
+  const std::size_t nv = geo_vertex_count(m), nf = geo_face_count(m);
   for(const Geo_location& loc : locations) {
     if(loc.at_vertex) {
-      if(loc.index >= m.number_of_vertices())
+      if(loc.index >= nv)
         throw Usage_error(std::string("--") + option + ": vertex " + std::to_string(loc.index) + " does not exist (the mesh has " +
-                          std::to_string(m.number_of_vertices()) + " vertices, 0 to " + std::to_string(m.number_of_vertices() - 1) + ")");
-      if(m.is_isolated(Geo_mesh::Vertex_index(Geo_mesh::size_type(loc.index))))
+                          std::to_string(nv) + " vertices, 0 to " + std::to_string(nv - 1) + ")");
+      if(geo_is_isolated(m, loc.index))
         throw Usage_error(std::string("--") + option + ": vertex " + std::to_string(loc.index) + " has no incident face");
-    } else if(loc.index >= m.number_of_faces()) {
+    } else if(loc.index >= nf) {
       throw Usage_error(std::string("--") + option + ": face " + std::to_string(loc.index) + " does not exist (the mesh has " +
-                        std::to_string(m.number_of_faces()) + " faces, 0 to " + std::to_string(m.number_of_faces() - 1) + ")");
+                        std::to_string(nf) + " faces, 0 to " + std::to_string(nf - 1) + ")");
     }
   }
 }
@@ -103,13 +107,14 @@ inline std::array<double, 3> face_location_weights(const Geo_location& loc)
   return {{loc.weights[2], loc.weights[0], loc.weights[1]}};
 }
 
-inline Geo_point location_point(const Geo_mesh& m, const Geo_location& loc)
+template <class Surface>
+Geo_point location_point(const Surface& m, const Geo_location& loc)
 {
-  if(loc.at_vertex) return m.point(Geo_mesh::Vertex_index(Geo_mesh::size_type(loc.index)));
-  const auto c = face_corners(m, Geo_mesh::Face_index(Geo_mesh::size_type(loc.index)));
+  if(loc.at_vertex) return geo_vertex_point(m, loc.index);
+  const auto c = geo_triangle(m, loc.index);
   double x = 0, y = 0, z = 0;
   for(int k = 0; k < 3; ++k) {
-    const Geo_point& p = m.point(c[std::size_t(k)]);
+    const Geo_point& p = geo_vertex_point(m, c[std::size_t(k)]);
     x += loc.weights[std::size_t(k)] * p.x();
     y += loc.weights[std::size_t(k)] * p.y();
     z += loc.weights[std::size_t(k)] * p.z();

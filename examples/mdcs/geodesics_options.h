@@ -101,12 +101,16 @@ inline Command_spec geodesics_command_spec()
     "Geodesic distances on a triangle mesh from one or more sources (CGAL::Polyhedral_geodesics_3: exact interval\n"
     "propagation by default, or an approximate method), shortest paths to targets, a picture, and the results as\n"
     "data: every distance (PLY, 17 significant digits), the paths and the iso-distance lines (JSON, CSV).\n";
-  s.positionals = {{"MESH", "OFF, PLY, OBJ or STL file, or @torus / @icosphere (generated meshes). The file must be a\n"
-                            "valid oriented manifold mesh: otherwise mdcs refuses it (exit 3) and says why (an edge\n"
-                            "shared by 3 faces, a pinched vertex, inconsistent orientation, a Moebius strip, an index\n"
-                            "out of range, ...). Faces with more than three corners are triangulated (with a note).\n"
-                            "Vertex indices are the file's; face indices the file's for a triangle mesh\n"
-                            "(distances.ply lists the mesh as used)."}};
+  s.positionals = {{"MESH", "OFF, PLY, OBJ or STL file, or @torus / @icosphere (generated meshes). A file that is not\n"
+                            "an oriented manifold mesh (edges shared by 3 or more faces, pinched vertices, faces\n"
+                            "oriented against each other, a Moebius strip) is used as given: edges connect the faces\n"
+                            "that share their two vertex indices, paths cross into every face of an edge (exact,\n"
+                            "merged:EPS and dijkstra, also --matrix; flat-exact and fmm also with pinched vertices\n"
+                            "only; the heat method and --compare-cgal refuse it, exit 3, saying why); the summary\n"
+                            "says so and counts the special edges and vertices. A malformed file (an index out of\n"
+                            "range, ...) is refused (exit 3). Faces with more than three corners are triangulated\n"
+                            "(with a note). Vertex indices are the file's; face indices the file's for a triangle\n"
+                            "mesh (distances.ply lists the surface as used)."}};
   s.min_positionals = s.max_positionals = 1;
   s.options = {
     text_option("source", "SPEC", "", "comma-separated sources (required): vertex indices (0,17) and/or surface points\n"
@@ -142,9 +146,10 @@ inline Command_spec geodesics_command_spec()
                 "source then costs what its neighbourhood costs (required by mtx)"),
     flag_option("symmetric", "with --matrix mtx --source all: a symmetric matrix, each pair the smaller of its two\n"
                 "directions (equal for the exact method up to rounding; written as the lower triangle)"),
-    flag_option("repair", "run CGAL's soup repair on a file that is not a valid mesh instead of refusing it; it\n"
-                "changes the surface (merges, reorients, cuts non-manifold parts open): said on stderr,\n"
-                "in summary.txt and summary.json, and indices then refer to the repaired mesh"),
+    flag_option("repair", "run CGAL's soup repair on a file that is not an oriented manifold mesh instead of using it\n"
+                "as given; it changes the surface (merges, reorients, cuts non-manifold parts open and a\n"
+                "Moebius strip across): said on stderr, in summary.txt and summary.json, and indices then\n"
+                "refer to the repaired mesh"),
   };
   add_common_options(s, Common_options{"mdcs-output", true, true});
   s.notes =
@@ -155,8 +160,9 @@ inline Command_spec geodesics_command_spec()
     "--no-picture), summary.txt, summary.json.\n"
     "With --matrix: distances.npy or distances.mtx, summary.txt, summary.json.\n"
     "Exit codes: 2 for a malformed or out-of-range --source/--targets, an unknown --method or a surface-point source\n"
-    "with the heat method; 3 for a mesh file that is malformed (the message names the line or element), is not a\n"
-    "valid oriented manifold mesh (without --repair), has no face, or that the heat method cannot handle; 1 when a\n"
+    "with the heat method; 3 for a mesh file that is malformed (the message names the line or element), has no\n"
+    "face, or is a surface the method cannot handle (not an oriented manifold mesh: heat always, fmm and flat-exact\n"
+    "with edges of 3+ faces or reversed gluings, --compare-cgal; degenerate faces: heat); 1 when a\n"
     "result fails its check (a distance that is not finite, a source not at 0).\n";
   return s;
 }

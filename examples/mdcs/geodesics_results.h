@@ -6,6 +6,7 @@
 
 #include "cli_common.h"
 #include "geodesic_locations.h"
+#include "geodesic_soup.h"
 #include "mesh_input.h"
 
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
@@ -71,6 +72,7 @@ struct Geodesics_run
   std::vector<std::string> files; // every file written, in order
   std::size_t components = 0, components_with_sources = 0; // the heat method: connected components
   std::size_t isolines = 0;                                 // polylines in isolines.csv
+  Geo_surface_shape surface; // as given (and its shape report), or repaired (geodesic_soup.h)
 
   // Counts the reachable vertices and finds the farthest one, from `distance`.
   void find_farthest()
@@ -98,14 +100,11 @@ struct Geodesics_run
 
 
 // Refuses distances that cannot be right (see the file comment); `method` names the method in the message.
-inline void check_geodesic_distances(const Geo_mesh& mesh, const Geodesics_run& run, const std::string& method)
+template <class Surface>
+void check_geodesic_distances(const Surface& mesh, const Geodesics_run& run, const std::string& method)
 {
-  double total_length = 0, longest = 0;
-  for(Geo_mesh::Edge_index e : mesh.edges()) {
-    const double l = std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1))));
-    total_length += l;
-    longest = std::max(longest, l);
-  }
+  const Geo_edge_stats edges = geo_edge_lengths(mesh);
+  const double total_length = edges.total, longest = edges.longest;
   const double bound = total_length * (1 + 1e-9) + longest; // a face-point source adds at most one edge length
   auto refuse = [&](std::size_t v, const std::string& what) {
     std::ostringstream m;
@@ -123,7 +122,7 @@ inline void check_geodesic_distances(const Geo_mesh& mesh, const Geodesics_run& 
     if(d > bound) refuse(v, "a distance longer than all the mesh's edges together");
   }
   // A vertex source at 0 exactly; the heat method's values are approximate: within 1e-3 mean edge lengths.
-  const double mean_edge = total_length / std::max<double>(1.0, double(mesh.number_of_edges()));
+  const double mean_edge = edges.mean();
   const double tolerance = method.find("heat") != std::string::npos ? 1e-3 * mean_edge : 0;
   for(const Geo_location& s : run.sources)
     if(s.at_vertex && !(std::abs(run.distance[s.index]) <= tolerance)) refuse(s.index, "a source that is not at distance 0");

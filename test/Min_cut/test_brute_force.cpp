@@ -22,7 +22,7 @@ namespace {
 
 namespace MC = CGAL::Min_cut;
 typedef MC::Flow_network<double> Network;
-const double inf = Network::infinity();
+using MDCS_test::inf;
 using MDCS_test::as_mask;
 using MDCS_test::cut_capacity;
 

@@ -21,11 +21,11 @@
 
 namespace {
 
-const auto grid = MDCS_test::grid_network; // square grids here: grid(w, w, ...)
 
 namespace MC = CGAL::Min_cut;
 typedef MC::Flow_network<double> Network;
-const double inf = Network::infinity();
+using MDCS_test::inf;
+using MDCS_test::grid_network;
 
 void compare_engines(const Network& network, bool same_sides)
 {
@@ -93,11 +93,11 @@ TEST_CASE("engines: Boykov-Kolmogorov and push-relabel give the same cut on grid
 {
   for(unsigned seed = 1; seed <= 4; ++seed) {
     // Integer capacities: exact arithmetic, so the minimal source sides must coincide.
-    compare_engines(grid(60, 60, false, true, seed), true);
-    compare_engines(grid(60, 60, true, true, seed), true);
+    compare_engines(grid_network(60, 60, false, true, seed), true);
+    compare_engines(grid_network(60, 60, true, true, seed), true);
     // Real capacities: same value to rounding; the sides agree too unless rounding breaks a tie.
-    compare_engines(grid(60, 60, false, false, seed), false);
-    compare_engines(grid(60, 60, true, false, seed), false);
+    compare_engines(grid_network(60, 60, false, false, seed), false);
+    compare_engines(grid_network(60, 60, true, false, seed), false);
   }
 }
 
@@ -107,7 +107,7 @@ TEST_CASE("engines: Boost's Boykov-Kolmogorov black set is the residual-reachabl
   // over residual arcs from the source: the claim that lets that engine read the sides from colours.
   typedef MC::internal::Csr_flow_graph<double> Flow_graph;
   for(unsigned seed = 1; seed <= 8; ++seed) {
-    const Network network = grid(40, 40, seed % 2 == 0, seed % 4 < 2, seed);
+    const Network network = grid_network(40, 40, seed % 2 == 0, seed % 4 < 2, seed);
     const MC::Max_flow_problem<double> problem(network);
     Flow_graph flow_graph(problem);
     const std::size_t nv = num_vertices(flow_graph.graph());
@@ -170,6 +170,6 @@ TEST_CASE("engines: an engine returning the wrong number of sides is reported", 
 
 TEST_CASE("engines: Boykov-Kolmogorov and push-relabel agree on a 500 x 500 grid", "[Min_cut][.long]")
 {
-  compare_engines(grid(500, 500, false, true, 99), true);
-  compare_engines(grid(500, 500, true, true, 99), true);
+  compare_engines(grid_network(500, 500, false, true, 99), true);
+  compare_engines(grid_network(500, 500, true, true, 99), true);
 }

@@ -23,26 +23,8 @@ namespace {
 namespace MC = CGAL::Min_cut;
 typedef MC::Flow_network<double> Network;
 
-// The planar dual of MDCS_test::grid_network (the layout of test_planar_min_cut.cpp).
-MC::Planar_dual grid_dual(const Network& network, std::size_t width, std::size_t height)
-{
-  auto corner = [&](std::size_t X, std::size_t Y) { return MC::Planar_dual::Vertex_index(Y * (width + 1) + X); };
-  MC::Planar_dual dual;
-  dual.number_of_vertices = (width + 1) * (height + 1);
-  for(const auto& f : network.facets()) {
-    const std::size_t x = f.u % width, y = f.u / width;
-    if(f.v == f.u + 1) dual.edges.push_back({corner(x + 1, y + 1), corner(x + 1, y)});
-    else dual.edges.push_back({corner(x, y + 1), corner(x + 1, y + 1)});
-  }
-  for(const auto& f : network.source_facets()) dual.source_edges.push_back({corner(f.node % width, 0), corner(f.node % width + 1, 0)});
-  for(const auto& f : network.sink_facets())
-    dual.sink_edges.push_back({corner(f.node % width, height), corner(f.node % width + 1, height)});
-  for(std::size_t Y = 0; Y <= height; ++Y) {
-    dual.start_vertices.push_back(corner(0, Y));
-    dual.end_vertices.push_back(corner(width, Y));
-  }
-  return dual;
-}
+using MDCS_test::grid_dual;
+
 
 // The grid with every capacity multiplied by `factor`.
 Network scaled(const Network& g, double factor)

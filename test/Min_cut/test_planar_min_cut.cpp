@@ -21,33 +21,9 @@ namespace {
 namespace MC = CGAL::Min_cut;
 typedef MC::Flow_network<double> Network;
 using MDCS_test::as_mask;
+using MDCS_test::grid_dual;
 using MDCS_test::cut_capacity;
 
-// The planar dual of MDCS_test::grid_network(width, height, ...): node (x, y) is the unit square
-// [x, x+1] x [y, y+1], dual vertices are the square corners, the source lies below the grid and the sink above
-// it, and a cut runs from the left side (start) to the right side (end) with the source on its right.
-MC::Planar_dual grid_dual(const Network& network, std::size_t width, std::size_t height)
-{
-  auto corner = [&](std::size_t X, std::size_t Y) { return MC::Planar_dual::Vertex_index(Y * (width + 1) + X); };
-  MC::Planar_dual dual;
-  dual.number_of_vertices = (width + 1) * (height + 1);
-  for(const auto& f : network.facets()) {
-    const std::size_t x = f.u % width, y = f.u / width;
-    if(f.v == f.u + 1) // v right of u: the shared side is x + 1, walked downwards to keep u on the right
-      dual.edges.push_back({corner(x + 1, y + 1), corner(x + 1, y)});
-    else // v above u: the shared side is y + 1, walked to the right (u below, on the right)
-      dual.edges.push_back({corner(x, y + 1), corner(x + 1, y + 1)});
-  }
-  for(const auto& f : network.source_facets()) // bottom side, walked to the right: the source below, on the right
-    dual.source_edges.push_back({corner(f.node % width, 0), corner(f.node % width + 1, 0)});
-  for(const auto& f : network.sink_facets()) // top side, walked to the right: the node below, on the right
-    dual.sink_edges.push_back({corner(f.node % width, height), corner(f.node % width + 1, height)});
-  for(std::size_t Y = 0; Y <= height; ++Y) {
-    dual.start_vertices.push_back(corner(0, Y));
-    dual.end_vertices.push_back(corner(width, Y));
-  }
-  return dual;
-}
 
 // The chain, sides and value of `r` describe one cut of `network`.
 void check_consistent(const Network& network, const MC::Min_cut_result<double>& r)

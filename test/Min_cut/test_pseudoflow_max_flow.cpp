@@ -22,14 +22,14 @@ namespace {
 
 namespace MC = CGAL::Min_cut;
 typedef MC::Flow_network<double> Network;
-const double inf = Network::infinity();
+using MDCS_test::inf;
+using MDCS_test::grid_network;
 using MDCS_test::as_mask;
 using MDCS_test::cut_capacity;
-const auto grid = MDCS_test::grid_network;
 
 // The minimum over all partitions and the intersection of the optimal source sides (the minimal
 // one: with integer capacities the optimal sides are closed under intersection).
-std::pair<double, std::uint32_t> enumerate(const Network& network)
+std::pair<double, std::uint32_t> minimum_by_enumeration(const Network& network)
 {
   const std::uint32_t n = std::uint32_t(network.number_of_nodes());
   double best = inf;
@@ -92,7 +92,7 @@ TEST_CASE("pseudoflow: random small networks against all 2^n partitions", "[Min_
   for(int trial = 0; trial < 3000; ++trial) {
     const std::uint32_t n = 1 + std::uint32_t(trial % 12);
     const Network network = random_network(rng, n);
-    const auto expected = enumerate(network);
+    const auto expected = minimum_by_enumeration(network);
     const MC::Max_flow_problem<double> problem(network);
     std::vector<char> side;
     const double flow = MC::Pseudoflow_max_flow()(problem, side);
@@ -118,12 +118,12 @@ TEST_CASE("pseudoflow: random small networks against all 2^n partitions", "[Min_
 TEST_CASE("pseudoflow: same value and sides as push-relabel on grids", "[Min_cut][pseudoflow]")
 {
   for(unsigned seed = 1; seed <= 4; ++seed) {
-    compare_with_push_relabel(grid(60, 60, false, true, seed), true);
-    compare_with_push_relabel(grid(60, 60, true, true, seed), true);
-    compare_with_push_relabel(grid(90, 25, true, true, seed + 10), true);
+    compare_with_push_relabel(grid_network(60, 60, false, true, seed), true);
+    compare_with_push_relabel(grid_network(60, 60, true, true, seed), true);
+    compare_with_push_relabel(grid_network(90, 25, true, true, seed + 10), true);
     // Real capacities: equal values up to rounding; the sides agree unless rounding breaks a tie.
-    compare_with_push_relabel(grid(60, 60, false, false, seed), false);
-    compare_with_push_relabel(grid(60, 60, true, false, seed), false);
+    compare_with_push_relabel(grid_network(60, 60, false, false, seed), false);
+    compare_with_push_relabel(grid_network(60, 60, true, false, seed), false);
   }
 }
 
@@ -132,7 +132,7 @@ TEST_CASE("pseudoflow: real-valued grids give the same sides as push-relabel", "
   // Ties are unlikely with random reals, so the minimal sides should coincide as well.
   int same = 0;
   for(unsigned seed = 1; seed <= 6; ++seed) {
-    const Network network = grid(50, 50, seed % 2 == 0, false, 100 + seed);
+    const Network network = grid_network(50, 50, seed % 2 == 0, false, 100 + seed);
     const auto pr = MC::solve_min_cut(network, MC::Push_relabel_max_flow());
     const auto pf = MC::solve_min_cut(network, MC::Pseudoflow_max_flow());
     CHECK(std::abs(pf.value - pr.value) <= 1e-12 * pr.value);
@@ -210,7 +210,7 @@ TEST_CASE("pseudoflow: a network with no finite cut is reported infinite", "[Min
 TEST_CASE("pseudoflow: a disconnected network", "[Min_cut][pseudoflow]")
 {
   // Two grids side by side without facets between them, plus a component with no terminal.
-  const Network a = grid(20, 15, true, true, 7), b = grid(12, 30, false, true, 8);
+  const Network a = grid_network(20, 15, true, true, 7), b = grid_network(12, 30, false, true, 8);
   Network network;
   network.add_nodes(a.number_of_nodes() + b.number_of_nodes() + 3);
   const auto offset = Network::Node_index(a.number_of_nodes());
@@ -255,7 +255,7 @@ TEST_CASE("pseudoflow: capacities from 1e-12 to 1e12 terminate with a minimum cu
     network.add_source_facet(Network::Node_index(rng() % n), std::pow(10.0, exponent(rng)), id++);
     network.add_sink_facet(n - 1, std::pow(10.0, exponent(rng)), id++);
     network.add_sink_facet(Network::Node_index(rng() % n), std::pow(10.0, exponent(rng)), id++);
-    const auto expected = enumerate(network);
+    const auto expected = minimum_by_enumeration(network);
     const auto r = MC::solve_min_cut(network, MC::Pseudoflow_max_flow());
     // Flows of the largest capacities (M included) pass through the nodes, so the cut is optimal
     // only up to their rounding: about epsilon times M (see the precision note of solve_min_cut;
@@ -314,6 +314,6 @@ TEST_CASE("pseudoflow: float and long double capacities", "[Min_cut][pseudoflow]
 
 TEST_CASE("pseudoflow: same value and sides as push-relabel on a 300 x 300 grid", "[Min_cut][pseudoflow]")
 {
-  compare_with_push_relabel(grid(300, 300, false, true, 99), true);
-  compare_with_push_relabel(grid(300, 300, true, true, 99), true);
+  compare_with_push_relabel(grid_network(300, 300, false, true, 99), true);
+  compare_with_push_relabel(grid_network(300, 300, true, true, 99), true);
 }

@@ -6,6 +6,8 @@
 
 #include <CGAL/Min_cut.h>
 
+#include <MDCS_test/min_cut_networks.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -21,7 +23,7 @@ namespace {
 
 namespace MC = CGAL::Min_cut;
 typedef MC::Flow_network<double> Network;
-const double inf = Network::infinity();
+using MDCS_test::inf;
 
 // Runs the test body once per engine.
 template <class Body>

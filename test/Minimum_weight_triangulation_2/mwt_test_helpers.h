@@ -187,6 +187,14 @@ inline double edge_weight(const std::vector<Point>& p, const std::vector<std::ar
   return s;
 }
 
+// Options with the LMT-skeleton as the first stage.
+inline MWT::Mwt_options lmt()
+{
+  MWT::Mwt_options o;
+  o.use_lmt_skeleton = true;
+  return o;
+}
+
 } // namespace mwt_test
 
 #endif // MDCS_TEST_MWT_TEST_HELPERS_H

@@ -23,13 +23,6 @@ namespace {
 
 MI::Length_segment seg(double x0, double y0, double x1, double y1) { return MI::Length_segment{{x0, y0, x1, y1}}; }
 
-MWT::Mwt_options lmt()
-{
-  MWT::Mwt_options o;
-  o.use_lmt_skeleton = true;
-  return o;
-}
-
 // the double-only Klincsek program (the version before the exact decisions), for comparison
 double double_only_convex_mwt(const std::vector<Point>& p, std::vector<int>* apex)
 {

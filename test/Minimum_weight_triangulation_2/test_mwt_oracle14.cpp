@@ -86,13 +86,6 @@ std::vector<Point> convex_position(int n, unsigned seed)
   return p;
 }
 
-MWT::Mwt_options lmt()
-{
-  MWT::Mwt_options o;
-  o.use_lmt_skeleton = true;
-  return o;
-}
-
 bool is_optimal(const MWT::Mwt_result& r)
 {
   return r.status == MWT::Mwt_status::certified_optimal || r.status == MWT::Mwt_status::optimal_after_branch_and_bound;

@@ -12,6 +12,7 @@
 #if defined(MDCS_HAS_CLP) && defined(MDCS_HAS_GLPK)
 
 #include "mwt_exhaustive_oracle.h"
+#include <MDCS_test/thread_counts.h>
 
 #include <CGAL/MDCS/concurrency.h>
 
@@ -30,7 +31,7 @@ using namespace mwt_test;
 
 namespace {
 
-const std::size_t thread_counts[] = {1, 2, 3, 8};
+using MDCS_test::thread_counts;
 
 // The lattice points on the circle x^2 + y^2 = (5 * 13 * 17)^2 (every one exactly cocircular: 4 * 3^3 = 108),
 // and random lattice points inside it.

@@ -8,7 +8,9 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -28,12 +30,7 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Dijkstra_geodesic_distances_3<Mesh> Dijkstra;
 typedef PG::Fast_marching_geodesic_distances_3<Mesh> Fmm;
@@ -41,10 +38,8 @@ typedef PG::Exact_geodesic_distances_3<Mesh> Exact;
 typedef Dijkstra::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
-const double inf = std::numeric_limits<double>::infinity();
-
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
+using MDCS_test::tolerance;
+using MDCS_test::inf;
 
 typedef MDCS_test::Named_soup<Point_3> Named_soup;
 

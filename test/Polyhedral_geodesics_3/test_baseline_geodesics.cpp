@@ -14,7 +14,9 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -36,13 +38,8 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Dijkstra_geodesic_distances_3<Mesh> Dijkstra;
 typedef PG::Fast_marching_geodesic_distances_3<Mesh> Fmm;
@@ -50,19 +47,10 @@ typedef PG::Exact_geodesic_distances_3<Mesh> Exact;
 typedef Dijkstra::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
-const double inf = std::numeric_limits<double>::infinity();
+using MDCS_test::tolerance;
+using MDCS_test::inf;
 
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
-
-template <class G>
-std::vector<double> vertex_distances(G& g, const Mesh& m)
-{
-  std::vector<double> r;
-  for(vertex_descriptor v : vertices(m))
-    r.push_back(g.distance(v));
-  return r;
-}
+using MDCS_test::vertex_distances;
 
 template <class G, class Sources>
 std::vector<double> run(const Mesh& m, const Sources& sources)
@@ -73,10 +61,7 @@ std::vector<double> run(const Mesh& m, const Sources& sources)
   return vertex_distances(g, m);
 }
 
-std::size_t index_of(const Mesh& m, vertex_descriptor v)
-{
-  return std::size_t(std::distance(vertices(m).begin(), std::find(vertices(m).begin(), vertices(m).end(), v)));
-}
+using MDCS_test::index_of;
 
 typedef MDCS_test::Named_soup<Point_3> Named_soup;
 
@@ -575,10 +560,7 @@ void check_invalid_input_and_progress(const char* stage_name)
 {
   INFO(stage_name);
   {
-    Mesh quad;
-    const auto a = quad.add_vertex(Point_3(0, 0, 0)), b = quad.add_vertex(Point_3(1, 0, 0)),
-               c = quad.add_vertex(Point_3(1, 1, 0)), d = quad.add_vertex(Point_3(0, 1, 0));
-    quad.add_face(a, b, c, d);
+    const Mesh quad = unit_square_quad();
     CHECK_THROWS_AS(G(quad), std::invalid_argument);
   }
   const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(2, 0.1, 2));

@@ -5,7 +5,9 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -18,26 +20,12 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
-
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
-
-std::vector<double> engine_vertex_distances(Geodesics& g, const Mesh& m)
-{
-  std::vector<double> r;
-  for(vertex_descriptor v : vertices(m))
-    r.push_back(g.distance(v));
-  return r;
-}
+using MDCS_test::tolerance;
 
 Face_location location(face_descriptor f, const std::array<double, 3>& b) { return Face_location(f, b); }
 
@@ -104,7 +92,7 @@ TEST_CASE("exact geodesics: flat meshes give Euclidean distances everywhere", "[
         sources.push_back(MDCS_test::location_point(m, loc_other.first, loc_other.second));
       }
       auto euclid = [&](const Vec3& p, std::size_t* argmin = nullptr) {
-        double best = MDCS_test::inf();
+        double best = MDCS_test::inf;
         for(std::size_t i = 0; i < sources.size(); ++i)
           if(MDCS_test::dist(p, sources[i]) < best) {
             best = MDCS_test::dist(p, sources[i]);
@@ -116,7 +104,7 @@ TEST_CASE("exact geodesics: flat meshes give Euclidean distances everywhere", "[
       std::vector<double> expected;
       for(vertex_descriptor v : vertices(m))
         expected.push_back(euclid(MDCS_test::vertex_vec3(m, v)));
-      const auto cmp = MDCS_test::compare_distances(expected, engine_vertex_distances(g, m), floor_value);
+      const auto cmp = MDCS_test::compare_distances(expected, MDCS_test::vertex_distances(g, m), floor_value);
       INFO("vertices: " << cmp);
       CHECK(cmp.ok(tolerance));
 
@@ -126,7 +114,7 @@ TEST_CASE("exact geodesics: flat meshes give Euclidean distances everywhere", "[
         std::size_t arg = 0;
         const Vec3 p = MDCS_test::vertex_vec3(m, v);
         euclid(p, &arg);
-        double second = MDCS_test::inf();
+        double second = MDCS_test::inf;
         for(std::size_t i = 0; i < sources.size(); ++i)
           if(i != arg) second = std::min(second, MDCS_test::dist(p, sources[i]));
         if(second - euclid(p) > 1e-9 * diag && g.nearest_source(v).second != arg)
@@ -239,7 +227,7 @@ TEST_CASE("exact geodesics: subdivided unit cube against unfoldings", "[geodesic
       const auto oracle_check = MDCS_test::compare_distances(smsp, e, 1e-12);
       INFO("analytic oracle vs Surface_mesh_shortest_path (self-check of the test): " << oracle_check);
       REQUIRE(oracle_check.ok(1e-9));
-      const auto cmp = MDCS_test::compare_distances(e, engine_vertex_distances(g, m), 1e-12);
+      const auto cmp = MDCS_test::compare_distances(e, MDCS_test::vertex_distances(g, m), 1e-12);
       INFO("vertices: " << cmp);
       CHECK(cmp.ok(tolerance));
 
@@ -296,7 +284,7 @@ TEST_CASE("exact geodesics: icosphere and bumpy sphere against Surface_mesh_shor
       std::vector<double> e;
       for(vertex_descriptor v : vertices(m))
         e.push_back(smsp.distance(v));
-      const auto cmp = MDCS_test::compare_distances(e, engine_vertex_distances(g, m), floor_value);
+      const auto cmp = MDCS_test::compare_distances(e, MDCS_test::vertex_distances(g, m), floor_value);
       INFO("vertices: " << cmp);
       CHECK(cmp.ok(tolerance));
       std::vector<double> eq, gq;
@@ -320,7 +308,7 @@ TEST_CASE("exact geodesics: icosphere and bumpy sphere against Surface_mesh_shor
       std::vector<double> e;
       for(vertex_descriptor v : vertices(m))
         e.push_back(smsp.distance(v));
-      const auto cmp = MDCS_test::compare_distances(e, engine_vertex_distances(g, m), floor_value);
+      const auto cmp = MDCS_test::compare_distances(e, MDCS_test::vertex_distances(g, m), floor_value);
       INFO("vertices: " << cmp);
       CHECK(cmp.ok(tolerance));
       std::vector<double> eq, gq;

@@ -8,7 +8,9 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -27,20 +29,16 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
 typedef CGAL::Polyhedron_3<K, CGAL::Polyhedron_items_with_id_3> Polyhedron_with_id;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
-const double inf = MDCS_test::inf();
+using MDCS_test::tolerance;
+using MDCS_test::inf;
 
 typedef MDCS_test::Named_soup<Point_3> Named_soup;
 
@@ -63,14 +61,7 @@ M make(const MDCS_test::Triangle_soup<Point_3>& soup)
   return m;
 }
 
-template <class G, class M>
-std::vector<double> vertex_distances(G& g, const M& m)
-{
-  std::vector<double> r;
-  for(auto v : vertices(m))
-    r.push_back(CGAL::to_double(g.distance(v)));
-  return r;
-}
+using MDCS_test::vertex_distances;
 
 std::vector<double> single_source(const Mesh& m, vertex_descriptor s)
 {
@@ -79,16 +70,7 @@ std::vector<double> single_source(const Mesh& m, vertex_descriptor s)
   return vertex_distances(g, m);
 }
 
-std::size_t index_of(const Mesh& m, vertex_descriptor v)
-{
-  std::size_t i = 0;
-  for(auto w : vertices(m)) {
-    if(w == v)
-      return i;
-    ++i;
-  }
-  return std::size_t(-1);
-}
+using MDCS_test::index_of;
 
 } // namespace
 

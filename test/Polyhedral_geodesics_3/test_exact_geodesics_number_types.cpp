@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
@@ -28,12 +29,9 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Exact_predicates_exact_constructions_kernel EK;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
 typedef CGAL::Surface_mesh<EK::Point_3> Exact_mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 using MDCS_test::Vec3;

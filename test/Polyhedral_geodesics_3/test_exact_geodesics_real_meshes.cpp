@@ -6,6 +6,8 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -20,14 +22,11 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 
-const double tolerance = 1e-12;
+using MDCS_test::tolerance;
 
 // Compares the engine with Surface_mesh_shortest_path on CGAL's demo mesh `name`. Returns false (with a
 // warning) when the mesh file is not available.
@@ -104,7 +103,7 @@ bool check_against_smsp(const std::string& name, std::size_t queries_per_run)
       const auto dij = MDCS_test::dijkstra_vertex_distances(m, vertex_sources);
       std::size_t above = 0, below = 0, i = 0;
       for(vertex_descriptor v : vertices(m)) {
-        double euclid = MDCS_test::inf();
+        double euclid = MDCS_test::inf;
         for(auto s : vertex_sources)
           euclid = std::min(euclid, MDCS_test::dist(MDCS_test::vertex_vec3(m, v), MDCS_test::vertex_vec3(m, s)));
         if(got[i] > dij[i] * (1 + tolerance) + floor_value) ++above;

@@ -6,7 +6,9 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -21,26 +23,16 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
-
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
+using MDCS_test::tolerance;
 
 // Vertex i of the mesh built from a soup is the i-th point (Surface_mesh keeps the order).
-vertex_descriptor vertex_at(const Mesh& /*m*/, std::size_t i)
-{
-  return vertex_descriptor(static_cast<Mesh::size_type>(i));
-}
+using MDCS_test::vertex_at;
 
 // Checks the distance at every vertex and at random surface points against the Euclidean distance from
 // the source points (the mesh must be a flat convex domain), and that the paths are finite and as long as the
@@ -50,7 +42,7 @@ void check_flat(Geodesics& g, const Mesh& m, const std::vector<Vec3>& sources, d
   INFO(what);
   const double diag = MDCS_test::bbox_diagonal(m);
   auto euclid = [&](const Vec3& p) {
-    double best = MDCS_test::inf();
+    double best = MDCS_test::inf;
     for(const auto& s : sources) best = std::min(best, MDCS_test::dist(p, s));
     return best;
   };
@@ -84,7 +76,7 @@ void check_flat(Geodesics& g, const Mesh& m, const std::vector<Vec3>& sources, d
     }
     const double len = MDCS_test::path_length(pts);
     const double r = MDCS_test::relative_difference(len, g.distance(v), tolerance * diag);
-    worst = std::max(worst, std::isnan(r) ? MDCS_test::inf() : r);
+    worst = std::max(worst, std::isnan(r) ? MDCS_test::inf : r);
     if(pts.empty() || !(r <= 1e-9)) ++bad_paths;
   }
   INFO("worst relative path length error " << worst << "; exceptions: " << exceptions << " (first: " << first_exception << ")");
@@ -360,10 +352,8 @@ TEST_CASE("exact geodesics robustness: invalid input is rejected", "[geodesics][
 {
   // a quad face
   {
-    Mesh quad;
-    const auto a = quad.add_vertex(Point_3(0, 0, 0)), b = quad.add_vertex(Point_3(1, 0, 0)),
-               c = quad.add_vertex(Point_3(1, 1, 0)), d = quad.add_vertex(Point_3(0, 1, 0));
-    quad.add_face(a, b, c, d);
+    Mesh quad = unit_square_quad();
+    const vertex_descriptor a = vertex_at(quad, 0), b = vertex_at(quad, 1), c = vertex_at(quad, 2);
     CHECK_THROWS_AS(Geodesics(quad), std::invalid_argument);
     std::vector<double> out(4);
     auto dmap = quad.add_property_map<vertex_descriptor, double>("v:d", 0).first;

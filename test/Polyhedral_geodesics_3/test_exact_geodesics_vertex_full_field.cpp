@@ -8,7 +8,9 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -24,32 +26,25 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
-
-struct Source
+struct Field_source
 {
   bool at_vertex;
   vertex_descriptor v;
   Face_location loc;
 };
-Source at(vertex_descriptor v) { return Source{true, v, Face_location()}; }
-Source at(const Face_location& loc) { return Source{false, vertex_descriptor(), loc}; }
+Field_source field_source_at(vertex_descriptor v) { return Field_source{true, v, Face_location()}; }
+Field_source field_source_at(const Face_location& loc) { return Field_source{false, vertex_descriptor(), loc}; }
 
 template <class G>
-void add_sources(G& g, const std::vector<Source>& sources)
+void add_field_sources(G& g, const std::vector<Field_source>& sources)
 {
-  for(const Source& s : sources) {
+  for(const Field_source& s : sources) {
     if(s.at_vertex) g.add_source(s.v);
     else g.add_source(s.loc);
   }
@@ -96,7 +91,7 @@ struct Report
   }
 };
 
-const double tolerance = 1e-12;
+using MDCS_test::tolerance;
 
 bool same(double a, double b, double floor_value, double& worst)
 {
@@ -179,7 +174,7 @@ void check_path(Geodesics& g, Geodesics& w, const Mesh& m, const Face_location& 
 }
 
 // Runs both full fields with the same sources and options and compares them.
-void compare_full_fields(const Mesh& m, const std::vector<Source>& sources, const std::string& what,
+void compare_full_fields(const Mesh& m, const std::vector<Field_source>& sources, const std::string& what,
                          std::size_t n_points, std::size_t n_paths, double limit = -1,
                          const std::vector<vertex_descriptor>& stop_targets = {})
 {
@@ -190,10 +185,10 @@ void compare_full_fields(const Mesh& m, const std::vector<Source>& sources, cons
   for(Geodesics* x : {&g, &w}) {
     if(limit >= 0) x->set_distance_limit(limit);
     if(!stop_targets.empty()) x->set_stop_targets(stop_targets);
-    add_sources(*x, sources);
+    add_field_sources(*x, sources);
   }
   std::vector<Vec3> source_points;
-  for(const Source& s : sources)
+  for(const Field_source& s : sources)
     source_points.push_back(s.at_vertex ? MDCS_test::vertex_vec3(m, s.v)
                                         : MDCS_test::location_point(m, s.loc.first, s.loc.second));
   const double diag = MDCS_test::bbox_diagonal(m), floor_value = tolerance * diag;
@@ -231,7 +226,7 @@ void compare_full_fields(const Mesh& m, const std::vector<Source>& sources, cons
       (void)p;
       Geodesics single(m);
       single.set_vertex_oriented_propagation(false);
-      add_sources(single, {sources[a.second]});
+      add_field_sources(single, {sources[a.second]});
       if(!(MDCS_test::relative_difference(single.distance(loc), a.first, floor_value) <= 1e-9)) {
         ++r.bad_source;
         r.note("point " + std::to_string(k) + ": nearest source " + std::to_string(a.second) + " vs " +
@@ -260,7 +255,7 @@ void compare_full_fields(const Mesh& m, const std::vector<Source>& sources, cons
   CHECK(r.bad_path == 0);
 }
 
-vertex_descriptor vertex_at(const Mesh& m, std::size_t i) { return *std::next(vertices(m).begin(), std::ptrdiff_t(i)); }
+using MDCS_test::vertex_at;
 face_descriptor face_at(const Mesh& m, std::size_t i) { return *std::next(faces(m).begin(), std::ptrdiff_t(i)); }
 
 } // namespace
@@ -269,10 +264,10 @@ TEST_CASE("vertex-oriented full field: equal to the window propagation on a curv
           "[geodesics][exact][vertex_oriented][full_field]")
 {
   const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.2, 5));
-  compare_full_fields(m, {at(vertex_at(m, 0))}, "bumpy sphere, one vertex source", 60, 20);
-  compare_full_fields(m, {at(Face_location(face_at(m, 11), {{0.2, 0.3, 0.5}})), at(vertex_at(m, 100))},
+  compare_full_fields(m, {field_source_at(vertex_at(m, 0))}, "bumpy sphere, one vertex source", 60, 20);
+  compare_full_fields(m, {field_source_at(Face_location(face_at(m, 11), {{0.2, 0.3, 0.5}})), field_source_at(vertex_at(m, 100))},
                       "bumpy sphere, a face source and a vertex source", 60, 20);
-  compare_full_fields(m, {at(Face_location(face_at(m, 40), {{0.4, 0.6, 0.0}}))}, "bumpy sphere, a source on an edge",
+  compare_full_fields(m, {field_source_at(Face_location(face_at(m, 40), {{0.4, 0.6, 0.0}}))}, "bumpy sphere, a source on an edge",
                       40, 10);
 }
 
@@ -280,17 +275,17 @@ TEST_CASE("vertex-oriented full field: flat mesh with a hole and a height field"
           "[geodesics][exact][vertex_oriented][full_field]")
 {
   const Mesh hole = make_mesh(MDCS_test::square_with_hole<Point_3>(14, 4, 9, 5, 8));
-  compare_full_fields(hole, {at(vertex_at(hole, 3))}, "square with a hole", 60, 20);
+  compare_full_fields(hole, {field_source_at(vertex_at(hole, 3))}, "square with a hole", 60, 20);
   const Mesh hf = make_mesh(MDCS_test::height_field_grid<Point_3>(16, 0.15, 3));
-  compare_full_fields(hf, {at(vertex_at(hf, 7)), at(Face_location(face_at(hf, 300), {{0.1, 0.1, 0.8}}))},
+  compare_full_fields(hf, {field_source_at(vertex_at(hf, 7)), field_source_at(Face_location(face_at(hf, 300), {{0.1, 0.1, 0.8}}))},
                       "height field, two sources", 60, 20);
 }
 
 TEST_CASE("vertex-oriented full field: distance limit and stop targets", "[geodesics][exact][vertex_oriented][full_field]")
 {
   const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.2, 7));
-  compare_full_fields(m, {at(vertex_at(m, 5))}, "bumpy sphere, limit 0.8", 60, 15, 0.8);
-  compare_full_fields(m, {at(vertex_at(m, 5))}, "bumpy sphere, stop targets", 60, 15, -1,
+  compare_full_fields(m, {field_source_at(vertex_at(m, 5))}, "bumpy sphere, limit 0.8", 60, 15, 0.8);
+  compare_full_fields(m, {field_source_at(vertex_at(m, 5))}, "bumpy sphere, stop targets", 60, 15, -1,
                       {vertex_at(m, 200), vertex_at(m, 321)});
 }
 
@@ -301,5 +296,5 @@ TEST_CASE("vertex-oriented full field: a CGAL demo mesh", "[geodesics][exact][ve
     WARN("CGAL's demo meshes not found: skipped");
     return;
   }
-  compare_full_fields(m, {at(vertex_at(m, 0)), at(vertex_at(m, num_vertices(m) / 2))}, "elephant, two sources", 60, 20);
+  compare_full_fields(m, {field_source_at(vertex_at(m, 0)), field_source_at(vertex_at(m, num_vertices(m) / 2))}, "elephant, two sources", 60, 20);
 }

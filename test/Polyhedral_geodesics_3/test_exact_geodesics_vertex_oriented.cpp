@@ -8,7 +8,9 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -26,19 +28,13 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
-
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
+using MDCS_test::tolerance;
 
 struct Source
 {
@@ -56,14 +52,6 @@ void add_sources(G& g, const std::vector<Source>& sources)
   }
 }
 
-std::vector<double> distances(Geodesics& g, const Mesh& m)
-{
-  std::vector<double> d;
-  for(vertex_descriptor v : vertices(m))
-    d.push_back(g.distance(v));
-  return d;
-}
-
 // Runs the vertex-oriented schedule and the window propagation (full field) from the same sources and
 // compares the vertex distances (relative 1e-12, absolute floor 1e-12 of the diagonal), the unreachable
 // vertices, and the nearest sources where the sources are not tied. Returns the vertex-oriented distances.
@@ -75,7 +63,7 @@ std::vector<double> check_against_windows(const Mesh& m, const std::vector<Sourc
   Geodesics fast(m, PG::Geodesic_memory_mode::distances_only), full(m);
   add_sources(fast, sources);
   add_sources(full, sources);
-  const std::vector<double> a = distances(full, m), b = distances(fast, m);
+  const std::vector<double> a = MDCS_test::vertex_distances(full, m), b = MDCS_test::vertex_distances(fast, m);
   CHECK(fast.used_vertex_oriented_propagation() == !zero_area_faces);
   CHECK_FALSE(full.used_vertex_oriented_propagation());
   const double floor_value = tolerance * MDCS_test::bbox_diagonal(m);
@@ -88,7 +76,7 @@ std::vector<double> check_against_windows(const Mesh& m, const std::vector<Sourc
     for(const Source& s : sources) {
       Geodesics gi(m, PG::Geodesic_memory_mode::distances_only);
       add_sources(gi, {s});
-      single.push_back(distances(gi, m));
+      single.push_back(MDCS_test::vertex_distances(gi, m));
     }
   std::size_t k = 0, wrong_source = 0;
   for(vertex_descriptor v : vertices(m)) {
@@ -113,7 +101,7 @@ void check_flat(const Mesh& m, const std::vector<Source>& sources, const std::ve
   INFO(what);
   std::vector<double> e;
   for(vertex_descriptor v : vertices(m)) {
-    double best = MDCS_test::inf();
+    double best = MDCS_test::inf;
     for(const Vec3& p : points) best = std::min(best, MDCS_test::dist(MDCS_test::vertex_vec3(m, v), p));
     e.push_back(best);
   }

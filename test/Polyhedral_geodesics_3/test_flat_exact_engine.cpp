@@ -13,6 +13,7 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -34,15 +35,10 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::internal::Flat_exact_propagation<double> Engine;
 typedef PG::internal::Geodesic_mesh<double> Compact_mesh;
-
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
 
 // The compact mesh and the engine, for the DAG checks.
 struct Engine_run

@@ -13,7 +13,9 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Flat_exact_geodesic_distances_3.h>
@@ -32,22 +34,15 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor face_descriptor;
 namespace PG = CGAL::Polyhedral_geodesics_3;
-typedef PG::Flat_exact_geodesic_distances_3<Mesh> Geodesics;
+typedef PG::Flat_exact_geodesic_distances_3<Mesh> Flat_geodesics;
 typedef PG::Exact_geodesic_distances_3<Mesh> Exact_geodesics;
-typedef Geodesics::Face_location Face_location;
+typedef Flat_geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-const double tolerance = 1e-12;
-
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
+using MDCS_test::tolerance;
 
 vertex_descriptor vertex_at(std::size_t i) { return vertex_descriptor(static_cast<Mesh::size_type>(i)); }
 
@@ -57,7 +52,7 @@ vertex_descriptor grid_vertex(std::size_t n, std::size_t i, std::size_t j) { ret
 Vec3 point_of(const Mesh& m, const Face_location& l) { return MDCS_test::location_point(m, l.first, l.second); }
 
 // One node of a path as reported to a GeodesicPathVisitor.
-struct Recorder
+struct Flat_path_recorder
 {
   const Mesh* m;
   std::vector<Vec3> points;
@@ -77,7 +72,7 @@ struct Recorder
 };
 
 // Checks of the paths to a set of targets.
-struct Path_report
+struct Flat_path_report
 {
   std::size_t checked = 0, empty = 0, bad_start = 0, bad_end = 0, exceptions = 0, sequence_mismatch = 0,
               bad_parameters = 0, below_exact = 0;
@@ -86,7 +81,7 @@ struct Path_report
   std::string first_problem;
 };
 
-void note(Path_report& r, const std::string& what)
+void flat_note(Flat_path_report& r, const std::string& what)
 {
   if(r.first_problem.empty()) r.first_problem = what;
 }
@@ -95,37 +90,37 @@ void note(Path_report& r, const std::string& what)
 // recorded), match the visitor sequence, and not be shorter than `exact` (if given, > 0).
 template <class G>
 void check_path(G& g, const Mesh& m, const Face_location& target, const std::vector<Vec3>& sources, double diag,
-                double exact, Path_report& r)
+                double exact, Flat_path_report& r)
 {
   ++r.checked;
   const double d = g.distance(target);
   std::vector<Point_3> pts;
-  Recorder rec{&m, {}, 0};
+  Flat_path_recorder rec{&m, {}, 0};
   try {
     g.shortest_path_points(target, std::back_inserter(pts));
     g.shortest_path_sequence(target, rec);
   }
   catch(const std::exception& ex) {
     ++r.exceptions;
-    note(r, std::string("exception: ") + ex.what());
+    flat_note(r, std::string("exception: ") + ex.what());
     return;
   }
   if(pts.empty()) {
     ++r.empty;
-    note(r, "empty path");
+    flat_note(r, "empty path");
     return;
   }
   const Vec3 tp = point_of(m, target);
   if(MDCS_test::dist(MDCS_test::to_vec3(pts.front()), tp) > 1e-12 * diag) {
     ++r.bad_start;
-    note(r, "the path does not start at the target");
+    flat_note(r, "the path does not start at the target");
   }
-  double to_source = MDCS_test::inf();
+  double to_source = MDCS_test::inf;
   for(const Vec3& s : sources)
     to_source = std::min(to_source, MDCS_test::dist(MDCS_test::to_vec3(pts.back()), s));
   if(!(to_source <= 1e-12 * diag)) {
     ++r.bad_end;
-    note(r, "the path does not end at a source");
+    flat_note(r, "the path does not end at a source");
   }
   const double len = MDCS_test::path_length(pts);
   if(d > 1e-9 * diag) {
@@ -135,7 +130,7 @@ void check_path(G& g, const Mesh& m, const Face_location& target, const std::vec
   }
   if(exact > 0 && len < exact * (1 - 1e-9)) {
     ++r.below_exact;
-    note(r, "a path shorter than the exact distance");
+    flat_note(r, "a path shorter than the exact distance");
   }
   r.bad_parameters += rec.bad_parameters;
   bool same = rec.points.size() == pts.size();
@@ -143,11 +138,11 @@ void check_path(G& g, const Mesh& m, const Face_location& target, const std::vec
     same = MDCS_test::dist(rec.points[i], MDCS_test::to_vec3(pts[i])) <= 1e-12 * diag;
   if(!same) {
     ++r.sequence_mismatch;
-    note(r, "the visitor sequence differs from the points");
+    flat_note(r, "the visitor sequence differs from the points");
   }
 }
 
-std::ostream& operator<<(std::ostream& os, const Path_report& r)
+std::ostream& operator<<(std::ostream& os, const Flat_path_report& r)
 {
   return os << r.checked << " paths: empty " << r.empty << ", bad start " << r.bad_start << ", bad end " << r.bad_end
             << ", exceptions " << r.exceptions << ", sequence mismatches " << r.sequence_mismatch
@@ -156,7 +151,7 @@ std::ostream& operator<<(std::ostream& os, const Path_report& r)
             << (r.checked ? r.mean_length / double(r.checked) : 0.0) << " (first problem: " << r.first_problem << ")";
 }
 
-bool paths_end_at_sources(const Path_report& r)
+bool paths_end_at_sources(const Flat_path_report& r)
 {
   return r.empty == 0 && r.bad_start == 0 && r.bad_end == 0 && r.exceptions == 0 && r.sequence_mismatch == 0 &&
          r.bad_parameters == 0;
@@ -165,13 +160,13 @@ bool paths_end_at_sources(const Path_report& r)
 // A planar (convex) mesh: distances at every vertex and at random points are the Euclidean distances to the
 // nearest source point, nearest sources are right where not tied, and the paths (to every `path_step`-th vertex
 // and to random points) are straight: they end at a source and are exactly as long as the distance.
-void check_planar(Geodesics& g, const Mesh& m, const std::vector<Vec3>& sources, std::size_t path_step,
+void check_planar(Flat_geodesics& g, const Mesh& m, const std::vector<Vec3>& sources, std::size_t path_step,
                   const std::string& what, double path_tolerance = 1e-12)
 {
   INFO(what);
   const double diag = MDCS_test::bbox_diagonal(m);
   auto nearest = [&](const Vec3& p, std::size_t& which, double& gap) {
-    double best = MDCS_test::inf(), second = MDCS_test::inf();
+    double best = MDCS_test::inf, second = MDCS_test::inf;
     for(std::size_t i = 0; i < sources.size(); ++i) {
       const double d = MDCS_test::dist(p, sources[i]);
       if(d < best) {
@@ -214,7 +209,7 @@ void check_planar(Geodesics& g, const Mesh& m, const std::vector<Vec3>& sources,
   INFO("face locations: " << cmp_q);
   CHECK(cmp_q.ok(tolerance));
   CHECK(wrong_source == 0);
-  Path_report r;
+  Flat_path_report r;
   std::size_t i = 0;
   for(vertex_descriptor v : vertices(m))
     if(i++ % path_step == 0)
@@ -228,7 +223,7 @@ void check_planar(Geodesics& g, const Mesh& m, const std::vector<Vec3>& sources,
 
 // The mean relative error of the flat-exact distances against the exact ones over the vertices at a positive
 // exact distance; `worst` receives the largest.
-double mean_relative_error(Geodesics& flat, Exact_geodesics& exact, const Mesh& m, double& worst)
+double mean_relative_error(Flat_geodesics& flat, Exact_geodesics& exact, const Mesh& m, double& worst)
 {
   double sum = 0;
   std::size_t n = 0;
@@ -262,7 +257,7 @@ TEST_CASE("flat-exact geodesics: planar meshes give Euclidean distances and stra
     const Mesh m = make_mesh(c.soup);
     const std::size_t nv = num_vertices(m);
     const face_descriptor f0 = *std::next(faces(m).begin(), long(num_faces(m) / 3));
-    Geodesics g(m);
+    Flat_geodesics g(m);
     // a corner
     g.add_source(vertex_at(0));
     check_planar(g, m, {MDCS_test::vertex_vec3(m, vertex_at(0))}, 1, c.name + ", source at a corner");
@@ -294,7 +289,7 @@ TEST_CASE("flat-exact geodesics: several sources on a planar mesh", "[geodesics]
   const std::size_t n = 30;
   const Mesh m = make_mesh(MDCS_test::jittered_planar_grid<Point_3>(n, n, 1, 1, 0.15, 5));
   const double diag = MDCS_test::bbox_diagonal(m);
-  Geodesics g(m);
+  Flat_geodesics g(m);
   const vertex_descriptor a = grid_vertex(n, 3, 4), b = grid_vertex(n, 24, 22);
   const face_descriptor f = *std::next(faces(m).begin(), long(num_faces(m) * 3 / 4));
   const Face_location c(f, {0.6, 0.1, 0.3});
@@ -306,7 +301,7 @@ TEST_CASE("flat-exact geodesics: several sources on a planar mesh", "[geodesics]
     std::vector<double> d;
     for(const Vec3& s : sources) d.push_back(MDCS_test::dist(p, s));
     const std::size_t i = std::size_t(std::min_element(d.begin(), d.end()) - d.begin());
-    double second = MDCS_test::inf();
+    double second = MDCS_test::inf;
     for(std::size_t k = 0; k < d.size(); ++k)
       if(k != i) second = std::min(second, d[k]);
     gap = second - d[i];
@@ -350,7 +345,7 @@ TEST_CASE("flat-exact geodesics: several sources on a planar mesh", "[geodesics]
   CHECK(g.nearest_source(c).second == 2);
   CHECK(g.distance(c) == 0);
   // every path ends at a source and is as long as the distance
-  Path_report r;
+  Flat_path_report r;
   for(vertex_descriptor v : vertices(m))
     check_path(g, m, g.vertex_location(v), sources, diag, 0, r);
   INFO(r);
@@ -383,7 +378,7 @@ TEST_CASE("flat-exact geodesics: curved meshes, error against the exact distance
     INFO(c.name);
     const Mesh m = c.soup.points.empty() ? elephant : make_mesh(c.soup);
     const double diag = MDCS_test::bbox_diagonal(m);
-    Geodesics flat(m);
+    Flat_geodesics flat(m);
     Exact_geodesics exact(m);
     const auto sources = MDCS_test::spread_vertices(m, 2, 5);
     std::vector<Vec3> source_points;
@@ -401,7 +396,7 @@ TEST_CASE("flat-exact geodesics: curved meshes, error against the exact distance
     for(vertex_descriptor v : vertices(m))
       if(!(flat.distance(v) >= 0) || std::isinf(flat.distance(v))) ++bad;
     CHECK(bad == 0);
-    Path_report r;
+    Flat_path_report r;
     const std::size_t step = num_vertices(m) / 600 + 1;
     std::size_t i = 0;
     for(vertex_descriptor v : vertices(m))
@@ -432,7 +427,7 @@ TEST_CASE("flat-exact geodesics: distance limit and stop targets", "[geodesics][
 {
   const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.1, 9));
   const vertex_descriptor s = vertex_at(5);
-  Geodesics full(m);
+  Flat_geodesics full(m);
   full.add_source(s);
   std::vector<double> d;
   for(vertex_descriptor v : vertices(m)) d.push_back(full.distance(v));
@@ -441,7 +436,7 @@ TEST_CASE("flat-exact geodesics: distance limit and stop targets", "[geodesics][
   const double limit = sorted[sorted.size() / 2];
   const auto locations = MDCS_test::random_face_locations(m, 100, 21);
 
-  Geodesics limited(m);
+  Flat_geodesics limited(m);
   limited.add_source(s);
   limited.set_distance_limit(limit);
   std::size_t finite = 0, wrong = 0, missing = 0;
@@ -449,7 +444,7 @@ TEST_CASE("flat-exact geodesics: distance limit and stop targets", "[geodesics][
     const double x = limited.distance(v), y = d[std::size_t(v)];
     if(std::isinf(x)) {
       if(y < limit) ++missing;
-      CHECK(limited.nearest_source(v).second == Geodesics::no_source);
+      CHECK(limited.nearest_source(v).second == Flat_geodesics::no_source);
       continue;
     }
     ++finite;
@@ -472,7 +467,7 @@ TEST_CASE("flat-exact geodesics: distance limit and stop targets", "[geodesics][
   CHECK(!pts.empty());
 
   // stop targets: their distances are final, every other finite value is the full one
-  Geodesics stopped(m);
+  Flat_geodesics stopped(m);
   stopped.add_source(s);
   const std::vector<vertex_descriptor> targets = {vertex_at(40), vertex_at(100), vertex_at(7)};
   stopped.set_stop_targets(targets);
@@ -502,7 +497,7 @@ TEST_CASE("flat-exact geodesics: Surface_mesh and Polyhedron_3 agree", "[geodesi
   for(const auto& soup : {MDCS_test::bumpy_sphere<Point_3>(3, 0.1, 6), MDCS_test::square_with_hole<Point_3>(16, 4, 10, 5, 9)}) {
     const Mesh sm = make_mesh(soup);
     const Polyhedron ph = MDCS_test::mesh_from_soup<Polyhedron>(soup);
-    Geodesics a(sm);
+    Flat_geodesics a(sm);
     PG::Flat_exact_geodesic_distances_3<Polyhedron> b(ph);
     a.add_source(vertex_at(3));
     b.add_source(*std::next(vertices(ph).begin(), 3));
@@ -538,7 +533,7 @@ TEST_CASE("flat-exact geodesics: degenerate meshes", "[geodesics][flat_exact]")
   for(const Case& c : cases) {
     const Mesh m = make_mesh(c.soup);
     const double path_tolerance = c.name == "collinear triangle" ? 0.05 : 1e-12;
-    Geodesics g(m);
+    Flat_geodesics g(m);
     g.add_source(vertex_at(0));
     check_planar(g, m, {MDCS_test::vertex_vec3(m, vertex_at(0))}, 1, c.name, path_tolerance);
     g.clear_sources();
@@ -549,11 +544,11 @@ TEST_CASE("flat-exact geodesics: degenerate meshes", "[geodesics][flat_exact]")
   // two components: the other one is unreachable
   const std::size_t n = 6;
   const Mesh two = make_mesh(MDCS_test::two_grids<Point_3>(n));
-  Geodesics g(two);
+  Flat_geodesics g(two);
   g.add_source(vertex_at(0));
   const vertex_descriptor far_vertex = vertex_at((n + 1) * (n + 1) + 3);
   CHECK(std::isinf(g.distance(far_vertex)));
-  CHECK(g.nearest_source(far_vertex).second == Geodesics::no_source);
+  CHECK(g.nearest_source(far_vertex).second == Flat_geodesics::no_source);
   std::vector<Point_3> pts;
   g.shortest_path_points(far_vertex, std::back_inserter(pts));
   CHECK(pts.empty());
@@ -563,16 +558,13 @@ TEST_CASE("flat-exact geodesics: degenerate meshes", "[geodesics][flat_exact]")
 TEST_CASE("flat-exact geodesics: invalid input is rejected", "[geodesics][flat_exact]")
 {
   {
-    Mesh quad;
-    const auto a = quad.add_vertex(Point_3(0, 0, 0)), b = quad.add_vertex(Point_3(1, 0, 0)),
-               c = quad.add_vertex(Point_3(1, 1, 0)), d = quad.add_vertex(Point_3(0, 1, 0));
-    quad.add_face(a, b, c, d);
-    CHECK_THROWS_AS(Geodesics(quad), std::invalid_argument);
+    const Mesh quad = unit_square_quad();
+    CHECK_THROWS_AS(Flat_geodesics(quad), std::invalid_argument);
   }
   const Mesh m = make_mesh(MDCS_test::planar_grid<Point_3>(3, 3));
   const face_descriptor f = *faces(m).begin();
   {
-    Geodesics g(m);
+    Flat_geodesics g(m);
     CHECK_THROWS_AS(g.compute(), std::logic_error);
     CHECK_THROWS_AS(g.distance(vertex_at(0)), std::logic_error);
     CHECK_THROWS_AS(g.distance(Face_location(f, {0.2, 0.3, 0.5})), std::logic_error);
@@ -580,7 +572,7 @@ TEST_CASE("flat-exact geodesics: invalid input is rejected", "[geodesics][flat_e
     CHECK_THROWS_AS(g.shortest_path_points(vertex_at(0), std::back_inserter(pts)), std::logic_error);
   }
   {
-    Geodesics g(m);
+    Flat_geodesics g(m);
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for(const std::array<double, 3>& b : {std::array<double, 3>{0.5, 0.6, 0.1}, std::array<double, 3>{-0.1, 0.6, 0.5},
                                           std::array<double, 3>{nan, 0.5, 0.5}})
@@ -597,7 +589,7 @@ TEST_CASE("flat-exact geodesics: invalid input is rejected", "[geodesics][flat_e
 TEST_CASE("flat-exact geodesics: memory modes, progress, cancellation, statistics", "[geodesics][flat_exact]")
 {
   const Mesh m = make_mesh(MDCS_test::jittered_planar_grid<Point_3>(50, 50, 1, 1, 0.2, 13));
-  Geodesics full(m);
+  Flat_geodesics full(m);
   full.add_source(vertex_at(0));
   std::vector<std::pair<std::string, double>> calls;
   full.compute([&](const char* stage, double fraction) {
@@ -624,14 +616,14 @@ TEST_CASE("flat-exact geodesics: memory modes, progress, cancellation, statistic
   CHECK(!st.stopped_early);
 
   // distances_only: the same distances, no paths
-  Geodesics small(m, PG::Geodesic_memory_mode::distances_only);
+  Flat_geodesics small(m, PG::Geodesic_memory_mode::distances_only);
   small.add_source(vertex_at(0));
   for(vertex_descriptor v : vertices(m)) CHECK(small.distance(v) == full.distance(v));
   std::vector<Point_3> pts;
   CHECK_THROWS_AS(small.shortest_path_points(vertex_at(7), std::back_inserter(pts)), std::logic_error);
 
   // cancellation, then a normal run of the same object
-  Geodesics c(m);
+  Flat_geodesics c(m);
   c.add_source(vertex_at(100));
   CHECK_THROWS_AS(c.compute([](const char*, double f) { return f < 0.3; }), CGAL::MDCS::Operation_cancelled);
   CHECK(!c.is_computed());
@@ -665,14 +657,14 @@ TEST_CASE("flat-exact geodesics: the arrays of the engine (large pages, reuse of
   const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(2, 0.15, 5));
   std::vector<std::vector<double>> fresh;
   for(std::size_t s : {std::size_t(0), std::size_t(37), std::size_t(0)}) {
-    Geodesics g(m);
+    Flat_geodesics g(m);
     g.add_source(vertex_at(s));
     std::vector<double> d;
     for(vertex_descriptor v : vertices(m))
       d.push_back(g.distance(v));
     fresh.push_back(d);
   }
-  Geodesics reused(m);
+  Flat_geodesics reused(m);
   std::size_t run = 0;
   for(std::size_t s : {std::size_t(0), std::size_t(37), std::size_t(0)}) {
     reused.clear_sources();

@@ -2,6 +2,8 @@
 // maxima, sources skipped, reachability mismatches counted apart, and other value types than double.
 #include <catch2/catch.hpp>
 
+#include <MDCS_test/test_numbers.h>
+
 #include <CGAL/Polyhedral_geodesics_3/geodesic_distance_error.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -19,7 +21,7 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 typedef Mesh::Vertex_index Vertex;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 
-const double inf = std::numeric_limits<double>::infinity();
+using MDCS_test::inf;
 
 // A mesh with n vertices (the metric only walks the vertices; faces do not matter).
 Mesh mesh_with_vertices(std::size_t n)

@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
@@ -27,10 +28,7 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 
 // The vertex distances of one class from the first vertex; `unit` is the mesh's scale (merged's tolerance is

@@ -14,7 +14,9 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 
@@ -32,12 +34,10 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PGI = CGAL::Polyhedral_geodesics_3::internal;
 
-const double pi = 3.14159265358979323846;
+using MDCS_test::pi;
 
 typedef CGAL::Polyhedron_3<K> Polyhedron;
 typedef CGAL::Polyhedron_3<K, CGAL::Polyhedron_items_with_id_3> Polyhedron_with_id;
@@ -51,7 +51,7 @@ PGI::Geodesic_mesh<double> compact(const Mesh& m)
   return cm;
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+using MDCS_test::same_bits;
 
 // Removes every `every`-th face, adds back every `back_every`-th of them in reverse order, collects the garbage:
 // face and halfedge indices no longer follow each other.

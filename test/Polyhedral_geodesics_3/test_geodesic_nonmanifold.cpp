@@ -17,6 +17,7 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/test_numbers.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_surface_3.h>
@@ -43,8 +44,8 @@ typedef PG::Triangle_soup Soup;
 typedef PG::Geodesic_surface_3<Soup> Surface;
 typedef std::array<double, 3> P3;
 typedef std::array<std::size_t, 3> Tri;
-const double pi = 3.14159265358979323846;
-const double inf = std::numeric_limits<double>::infinity();
+using MDCS_test::pi;
+using MDCS_test::inf;
 
 struct Soup_data
 {

@@ -12,7 +12,9 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/test_numbers.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -33,14 +35,12 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 using MDCS_test::Vec3;
 
-const double pi = 3.14159265358979323846;
+using MDCS_test::pi;
 
 // The nodes of a path as the visitor reports them: kind, point, the faces that contain the node, the vertex
 // (VERTEX) or the edge's end points (EDGE).

@@ -13,7 +13,9 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_surface_3.h>
@@ -36,15 +38,13 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Triangle_soup Soup;
 typedef PG::Geodesic_surface_3<Soup> Soup_surface;
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+using MDCS_test::same_bits;
 
 // The points and triangles of a FaceGraph in its own numbering (vertex and face index maps), the corners of
 // triangle f in the order of Face_location: source(halfedge(f)), target(halfedge(f)), target(next(halfedge(f))).

@@ -9,7 +9,9 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 
@@ -23,26 +25,17 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Merged_window_geodesic_distances_3<Mesh> Merged;
 
-double mean_edge_length(const Mesh& m)
-{
-  double s = 0;
-  for(auto e : edges(m))
-    s += std::sqrt(CGAL::to_double(CGAL::squared_distance(m.point(source(halfedge(e, m), m)), m.point(target(halfedge(e, m), m)))));
-  return s / double(num_edges(m));
-}
+using MDCS_test::mean_edge_length;
 
 // A regular hexagon fanned from its centre and refined: a convex planar mesh with border vertices of angle 2 pi / 3.
 MDCS_test::Triangle_soup<Point_3> refined_hexagon(std::size_t rings)
 {
   MDCS_test::Triangle_soup<Point_3> s;
-  const double pi = 3.14159265358979323846;
+  using MDCS_test::pi;
   // vertices by ring r (0: the centre) and position k in the ring (6 r of them)
   std::vector<std::vector<std::size_t>> ring(rings + 1);
   s.points.push_back(Point_3(0, 0, 0));
@@ -76,7 +69,7 @@ struct Flat_case
   Mesh mesh;
 };
 
-std::vector<Flat_case> flat_meshes()
+std::vector<Flat_case> flat_cases()
 {
   std::vector<Flat_case> r;
   r.push_back({"subdivided triangle", MDCS_test::mesh_from_soup<Mesh>(MDCS_test::subdivided_triangle<Point_3>(20))});
@@ -107,7 +100,7 @@ const char* mode_name(Mode m)
 TEST_CASE("merged windows on flat meshes: the straight-line distance in every mode and at every tolerance",
           "[geodesics][merged][flat]")
 {
-  for(const Flat_case& c : flat_meshes()) {
+  for(const Flat_case& c : flat_cases()) {
     const Mesh& m = c.mesh;
     const double edge = mean_edge_length(m);
     const std::size_t nv = num_vertices(m);

@@ -7,6 +7,7 @@
 
 #include <MDCS_test/cgal_meshes.h>
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -21,33 +22,14 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+using namespace MDCS_test::Epick_surface_mesh;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Exact_geodesic_distances_3<Mesh> Exact;
 typedef PG::Merged_window_geodesic_distances_3<Mesh> Merged;
 using MDCS_test::Vec3;
 
-Mesh make_mesh(const MDCS_test::Triangle_soup<Point_3>& soup) { return MDCS_test::mesh_from_soup<Mesh>(soup); }
-
-double mean_edge_length(const Mesh& m)
-{
-  double s = 0;
-  for(auto e : edges(m))
-    s += MDCS_test::dist(MDCS_test::vertex_vec3(m, source(halfedge(e, m), m)), MDCS_test::vertex_vec3(m, target(halfedge(e, m), m)));
-  return s / double(num_edges(m));
-}
-
-template <class G>
-std::vector<double> all_distances(G& g, const Mesh& m)
-{
-  std::vector<double> r;
-  for(vertex_descriptor v : vertices(m))
-    r.push_back(g.distance(v));
-  return r;
-}
+using MDCS_test::mean_edge_length;
+using MDCS_test::vertex_distances;
 
 struct Test_mesh
 {
@@ -55,7 +37,7 @@ struct Test_mesh
   Mesh mesh;
 };
 
-std::vector<Test_mesh> curved_meshes()
+std::vector<Test_mesh> curved_test_meshes()
 {
   std::vector<Test_mesh> r;
   r.push_back({"bumpy sphere 3", make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.2, 5))});
@@ -89,7 +71,7 @@ bool load_demo_case(const std::string& name, Demo_case& c)
   c.source = vertex_descriptor(static_cast<Mesh::size_type>(num_vertices(c.mesh) / 3));
   Exact exact(c.mesh, PG::Geodesic_memory_mode::distances_only);
   exact.add_source(c.source);
-  c.exact = all_distances(exact, c.mesh);
+  c.exact = vertex_distances(exact, c.mesh);
   return true;
 }
 
@@ -97,7 +79,7 @@ bool load_demo_case(const std::string& name, Demo_case& c)
 
 TEST_CASE("merged windows: tolerance 0 is the exact algorithm, bit for bit", "[geodesics][merged]")
 {
-  for(const auto& tm : curved_meshes()) {
+  for(const auto& tm : curved_test_meshes()) {
     INFO(tm.name);
     const auto sources = MDCS_test::spread_vertices(tm.mesh, 2, 3);
     Exact exact(tm.mesh);
@@ -106,7 +88,7 @@ TEST_CASE("merged windows: tolerance 0 is the exact algorithm, bit for bit", "[g
       exact.add_source(s);
       merged.add_source(s);
     }
-    CHECK(all_distances(merged, tm.mesh) == all_distances(exact, tm.mesh));
+    CHECK(vertex_distances(merged, tm.mesh) == vertex_distances(exact, tm.mesh));
     CHECK(merged.statistics().windows_propagated == exact.statistics().windows_propagated);
     CHECK(!merged.used_vertex_oriented_propagation());
 
@@ -117,7 +99,7 @@ TEST_CASE("merged windows: tolerance 0 is the exact algorithm, bit for bit", "[g
       exact_d.add_source(s);
       merged_d.add_source(s);
     }
-    CHECK(all_distances(merged_d, tm.mesh) == all_distances(exact_d, tm.mesh));
+    CHECK(vertex_distances(merged_d, tm.mesh) == vertex_distances(exact_d, tm.mesh));
     CHECK(merged_d.used_vertex_oriented_propagation());
     CHECK(merged_d.statistics().windows_created == exact_d.statistics().windows_created);
     CHECK(merged_d.statistics().windows_merged == 0);
@@ -126,12 +108,12 @@ TEST_CASE("merged windows: tolerance 0 is the exact algorithm, bit for bit", "[g
 
 TEST_CASE("merged windows: one-sided error, monotone in the tolerance", "[geodesics][merged]")
 {
-  for(const auto& tm : curved_meshes()) {
+  for(const auto& tm : curved_test_meshes()) {
     const double mel = mean_edge_length(tm.mesh);
     const vertex_descriptor s = MDCS_test::spread_vertices(tm.mesh, 1, 11)[0];
     Exact exact(tm.mesh, PG::Geodesic_memory_mode::distances_only);
     exact.add_source(s);
-    const std::vector<double> d = all_distances(exact, tm.mesh);
+    const std::vector<double> d = vertex_distances(exact, tm.mesh);
     // both schedules of distances_only runs: vertex-oriented (the default) and the window propagation
     for(bool vertex_oriented : {true, false}) {
     double previous_error = 0;
@@ -141,7 +123,7 @@ TEST_CASE("merged windows: one-sided error, monotone in the tolerance", "[geodes
       Merged merged(tm.mesh, relative * mel, PG::Geodesic_memory_mode::distances_only);
       merged.set_vertex_oriented_propagation(vertex_oriented);
       merged.add_source(s);
-      const std::vector<double> a = all_distances(merged, tm.mesh);
+      const std::vector<double> a = vertex_distances(merged, tm.mesh);
       double error = 0, below = 0;
       std::size_t n = 0;
       for(std::size_t i = 0; i < d.size(); ++i) {
@@ -179,7 +161,7 @@ TEST_CASE("merged windows: one-sided error, monotone in the tolerance", "[geodes
 
 TEST_CASE("merged windows: several sources and a face source, both schedules", "[geodesics][merged]")
 {
-  for(const auto& tm : curved_meshes()) {
+  for(const auto& tm : curved_test_meshes()) {
     const double mel = mean_edge_length(tm.mesh);
     const auto sources = MDCS_test::spread_vertices(tm.mesh, 3, 23);
     const auto f = *faces(tm.mesh).begin();
@@ -188,7 +170,7 @@ TEST_CASE("merged windows: several sources and a face source, both schedules", "
     for(auto s : sources)
       exact.add_source(s);
     exact.add_source(loc);
-    const std::vector<double> d = all_distances(exact, tm.mesh);
+    const std::vector<double> d = vertex_distances(exact, tm.mesh);
     for(bool vertex_oriented : {true, false}) {
       INFO(tm.name << ", vertex-oriented " << vertex_oriented);
       Merged merged(tm.mesh, 0.1 * mel, PG::Geodesic_memory_mode::distances_only);
@@ -196,7 +178,7 @@ TEST_CASE("merged windows: several sources and a face source, both schedules", "
       for(auto s : sources)
         merged.add_source(s);
       merged.add_source(loc);
-      const std::vector<double> a = all_distances(merged, tm.mesh);
+      const std::vector<double> a = vertex_distances(merged, tm.mesh);
       double error = 0, below = 0;
       std::size_t n = 0, bad_label = 0;
       std::size_t i = 0;
@@ -237,7 +219,7 @@ TEST_CASE("merged windows: coarse tolerances reach every vertex (bunny00)", "[ge
       Merged merged(m, relative * mel, PG::Geodesic_memory_mode::distances_only);
       merged.set_vertex_oriented_propagation(vertex_oriented);
       merged.add_source(s);
-      const std::vector<double> a = all_distances(merged, m);
+      const std::vector<double> a = vertex_distances(merged, m);
       std::size_t unreached = 0, below = 0;
       for(std::size_t i = 0; i < d.size(); ++i) {
         unreached += std::isfinite(a[i]) ? 0 : 1;
@@ -264,7 +246,7 @@ TEST_CASE("merged windows: never below exact on bull.off (no merge across a gap)
     INFO("tolerance " << relative << " x mean edge length");
     Merged merged(m, relative * mel, PG::Geodesic_memory_mode::distances_only);
     merged.add_source(s);
-    const std::vector<double> a = all_distances(merged, m);
+    const std::vector<double> a = vertex_distances(merged, m);
     std::size_t below = 0;
     for(std::size_t i = 0; i < d.size(); ++i)
       below += a[i] < d[i] * (1 - 1e-12) ? 1 : 0;
@@ -291,7 +273,7 @@ TEST_CASE("merged windows: flat meshes stay exact", "[geodesics][merged][flat]")
 
 TEST_CASE("merged windows: paths end at a source, between the exact and the merged distance", "[geodesics][merged][paths]")
 {
-  for(const auto& tm : curved_meshes()) {
+  for(const auto& tm : curved_test_meshes()) {
     const double mel = mean_edge_length(tm.mesh), diag = MDCS_test::bbox_diagonal(tm.mesh);
     const auto sources = MDCS_test::spread_vertices(tm.mesh, 2, 17);
     Exact exact(tm.mesh);

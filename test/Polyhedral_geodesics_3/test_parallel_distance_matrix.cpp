@@ -11,7 +11,10 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/geodesic_oracles.h>
+#include <MDCS_test/geodesic_test_meshes.h>
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/thread_counts.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
@@ -37,14 +40,11 @@
 
 namespace {
 
-typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef K::Point_3 Point_3;
-typedef CGAL::Surface_mesh<Point_3> Mesh;
+using namespace MDCS_test::Epick_surface_mesh;
 typedef CGAL::Polyhedron_3<K> Polyhedron;
-typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
 namespace PG = CGAL::Polyhedral_geodesics_3;
-const double inf = std::numeric_limits<double>::infinity();
-const std::size_t thread_counts[] = {1, 2, 3, 8};
+using MDCS_test::inf;
+using MDCS_test::thread_counts;
 const PG::Geodesic_method methods[] = {PG::Geodesic_method::exact, PG::Geodesic_method::merged_windows,
                                        PG::Geodesic_method::flat_exact, PG::Geodesic_method::fast_marching,
                                        PG::Geodesic_method::dijkstra};
@@ -62,12 +62,7 @@ Mesh grid_and_sphere()
   return MDCS_test::mesh_from_soup<Mesh>(soup);
 }
 
-double mean_edge_length(const Mesh& m)
-{
-  double s = 0;
-  for(auto e : edges(m)) s += std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m))));
-  return s / double(num_edges(m));
-}
+using MDCS_test::mean_edge_length;
 
 // The distances of a single-source run of the method's class, distances_only, optionally stopped at a limit.
 template <class TM>

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/mesh_generators.h>
+#include <MDCS_test/thread_counts.h>
+#include <MDCS_test/geodesic_test_geometry.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_surface_3.h>
@@ -23,7 +25,7 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_3 Point_3;
 namespace PG = CGAL::Polyhedral_geodesics_3;
 typedef PG::Triangle_soup Soup;
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+using MDCS_test::same_bits;
 
 } // namespace
 
@@ -45,7 +47,7 @@ TEST_CASE("geodesic surface: one object per thread on a shared surface, 1, 2, 3 
     serial_flat[s].resize(nv);
     flat.distances(CGAL::make_property_map(serial_flat[s]));
   }
-  for(std::size_t threads : {1, 2, 3, 8}) {
+  for(std::size_t threads : MDCS_test::thread_counts) {
     INFO(threads << " threads");
     std::vector<std::vector<double>> rows(sources, std::vector<double>(nv)), flat_rows = rows;
     std::atomic<std::size_t> next(0);

@@ -34,7 +34,7 @@ namespace {
 // floats first and both meshes then hold exactly the same coordinates.
 typedef OpenMesh::TriMesh_ArrayKernelT<> Open_mesh;
 
-SS::View_3<K> orbit_view(double angle, double elevation = 0.6, double radius = 4)
+SS::View_3<K> openmesh_orbit_view(double angle, double elevation = 0.6, double radius = 4)
 {
   return SS::View_3<K>::perspective(Point_3(radius * std::cos(angle) * std::cos(elevation),
                                             radius * std::sin(angle) * std::cos(elevation), radius * std::sin(elevation)));
@@ -68,8 +68,8 @@ TEST_CASE("Silhouette_simplifier_3: identical results on Surface_mesh and OpenMe
   SS::Silhouette_simplifier_3<Open_mesh> s2(om, c1.mesh, c1.coarse_face_of_fine_face);
   for(int i = 0; i < 3; ++i) {
     SS::Silhouette_frame f1, f2;
-    s1.extract(orbit_view(0.9 * i), f1);
-    s2.extract(orbit_view(0.9 * i), f2);
+    s1.extract(openmesh_orbit_view(0.9 * i), f1);
+    s2.extract(openmesh_orbit_view(0.9 * i), f2);
     s1.pick_loops(f1);
     s2.pick_loops(f2);
     s1.map_loops(f1);

@@ -1,6 +1,8 @@
 // Copyright (c) 2026 MDCS contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <MDCS_test/test_numbers.h>
+
 #include <CGAL/Variational_minimization/analytic_solutions_2.h>
 #include <CGAL/Variational_minimization/curve_functionals_2.h>
 #include <CGAL/Variational_minimization/edge_weight_2.h>
@@ -17,7 +19,7 @@ namespace VM = CGAL::Variational_minimization;
 
 namespace {
 
-const double pi = 3.141592653589793238462643383279503;
+using MDCS_test::pi;
 
 // Area of the surface of rotation of c cosh(x / c) on [-h, h] by direct quadrature of 2 pi f sqrt(1 + f'^2).
 double catenoid_area_by_quadrature(double c, double h)

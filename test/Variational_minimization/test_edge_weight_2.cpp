@@ -1,6 +1,8 @@
 // Copyright (c) 2026 MDCS contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <MDCS_test/test_numbers.h>
+
 #include <CGAL/Variational_minimization/curve_functionals_2.h>
 #include <CGAL/Variational_minimization/edge_weight_2.h>
 
@@ -17,10 +19,10 @@ namespace VM = CGAL::Variational_minimization;
 
 namespace {
 
-const double inf = std::numeric_limits<double>::infinity();
+using MDCS_test::inf;
 const double nan_value = std::numeric_limits<double>::quiet_NaN();
 
-double relative_difference(double a, double b) { return std::fabs(a - b) / std::max(std::fabs(a), std::fabs(b)); }
+using MDCS_test::relative_difference;
 
 // A closed form that lies, to check that edge_weight_2 validates closed-form results too.
 struct Bad_closed_form

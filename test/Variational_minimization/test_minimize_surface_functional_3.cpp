@@ -1,6 +1,8 @@
 // End-to-end tests of the bivariate solver: linear boundary data gives the plane exactly, Scherk's surface
 // converges, the cut value equals the surface energy, the surface is single-valued, all max-flow engines agree,
 // membranes sag, relaxed boundaries, the weights (closed form against quadrature), output files and bad input.
+#include <MDCS_test/test_numbers.h>
+
 #include <catch2/catch.hpp>
 
 #include <CGAL/Min_cut/solve_min_cut.h>
@@ -23,7 +25,7 @@ namespace VM = CGAL::Variational_minimization;
 
 namespace {
 
-double rel(double a, double b) { return a == b ? 0 : std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
+using MDCS_test::relative_difference;
 
 template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine>
 VM::Minimal_surface_3 solve(const VM::Surface_problem_3& P, const std::vector<VM::Lattice_plane_3>& planes,
@@ -34,8 +36,8 @@ VM::Minimal_surface_3 solve(const VM::Surface_problem_3& P, const std::vector<VM
   VM::Minimal_surface_3 s = VM::minimize_surface_functional_3(A, w, P, engine);
   REQUIRE(s.is_feasible);
   // Duality: the cut value is the energy of the extracted surface; the surface is a function over the domain.
-  CHECK(rel(s.energy, s.solver_value) <= 1e-9);
-  CHECK(rel(s.projected_area, P.domain_area()) <= 1e-9);
+  CHECK(relative_difference(s.energy, s.solver_value) <= 1e-9);
+  CHECK(relative_difference(s.projected_area, P.domain_area()) <= 1e-9);
   for(const auto& p : s.points) {
     CHECK(p[0] >= P.domain.xmin() - 1e-9);
     CHECK(p[0] <= P.domain.xmax() + 1e-9);
@@ -61,7 +63,7 @@ TEST_CASE("minimize_surface_functional_3: linear boundary data gives the plane",
     exact.a = 2; exact.b = 1; exact.c = -4; exact.d = VM::Plane_arrangement_3::lattice_size;
     planes.push_back(exact);
     const VM::Minimal_surface_3 s = solve(P, planes, VM::Area_functional_3());
-    CHECK(rel(s.energy, std::sqrt(1 + 0.25 + 0.0625)) <= 1e-9);
+    CHECK(relative_difference(s.energy, std::sqrt(1 + 0.25 + 0.0625)) <= 1e-9);
     for(const auto& p : s.points) CHECK(std::abs(p[2] - (0.25 + 0.5 * p[0] + 0.25 * p[1])) <= 1e-9);
   }
 }
@@ -93,8 +95,8 @@ TEST_CASE("minimize_surface_functional_3: the max-flow engines agree", "[variati
   const VM::Minimal_surface_3 pr = solve(P, planes, VM::Area_functional_3(), CGAL::Min_cut::Push_relabel_max_flow());
   const VM::Minimal_surface_3 bk =
     solve(P, planes, VM::Area_functional_3(), CGAL::Min_cut::Boykov_kolmogorov_max_flow());
-  CHECK(rel(pf.solver_value, pr.solver_value) <= 1e-9);
-  CHECK(rel(pf.solver_value, bk.solver_value) <= 1e-9);
+  CHECK(relative_difference(pf.solver_value, pr.solver_value) <= 1e-9);
+  CHECK(relative_difference(pf.solver_value, bk.solver_value) <= 1e-9);
   CHECK(pf.facets == pr.facets);
   CHECK(pf.facets == bk.facets);
 }
@@ -122,7 +124,7 @@ TEST_CASE("minimize_surface_functional_3: a membrane sags under gravity", "[vari
   CHECK(lowest < 0.7);
   // Without gravity the flat membrane is optimal and in the arrangement (the boundary cone is flat).
   G.k_g = 0;
-  CHECK(rel(solve(P, planes, G).energy, 1.0) <= 1e-9);
+  CHECK(relative_difference(solve(P, planes, G).energy, 1.0) <= 1e-9);
 }
 
 TEST_CASE("minimize_surface_functional_3: relaxed boundary", "[variational][surface]")
@@ -138,7 +140,7 @@ TEST_CASE("minimize_surface_functional_3: relaxed boundary", "[variational][surf
   std::vector<VM::Lattice_plane_3> with_flat = planes;
   with_flat.push_back(flat);
   const VM::Minimal_surface_3 s = solve(P, with_flat, VM::Area_functional_3());
-  CHECK(rel(s.energy, 1.0) <= 1e-9);
+  CHECK(relative_difference(s.energy, 1.0) <= 1e-9);
   // The same band with a fixed boundary at the lower curve costs more.
   VM::Surface_problem_3 F = P;
   F.upper_boundary = nullptr;
@@ -179,7 +181,7 @@ TEST_CASE("surface_facet_weights_3: closed forms agree with quadrature", "[varia
     s1 += b1[i];
     s3 += b3[i];
   }
-  CHECK(rel(s1, s3) <= 1e-5);
+  CHECK(relative_difference(s1, s3) <= 1e-5);
 }
 
 TEST_CASE("minimize_surface_functional_3: output files", "[variational][surface]")

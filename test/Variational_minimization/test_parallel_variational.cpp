@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 
 #include <MDCS_test/curve_problems.h>
+#include <MDCS_test/surface_problems.h>
+#include <MDCS_test/thread_counts.h>
 
 #include <CGAL/MDCS/concurrency.h>
 #include <CGAL/Variational_minimization/curve_edge_weights_2.h>
@@ -28,36 +30,14 @@
 #include <vector>
 
 namespace VM = CGAL::Variational_minimization;
+using MDCS_test::blob_planes;
+using MDCS_test::blob_problem;
 
 namespace {
 
-const std::size_t thread_counts[] = {1, 2, 3, 8};
+using MDCS_test::thread_counts;
 
-VM::Surface_problem_3 saddle_problem()
-{
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 2;
-  P.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
-  return P;
-}
-
-VM::Surface_problem_3 blob_problem()
-{
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 1;
-  P.lower_boundary = [](double, double) { return 0.0; };
-  P.upper_boundary = [](double, double) { return 1.0; };
-  return P;
-}
-
-VM::Surface_plane_options_3 blob_planes(std::uint64_t seed)
-{
-  VM::Surface_plane_options_3 o;
-  o.distribution = VM::Plane_distribution_3::slope_limited;
-  o.max_slope = 2;
-  o.seed = seed;
-  return o;
-}
+VM::Surface_problem_3 saddle_problem() { return MDCS_test::saddle_problem(2); }
 
 // A functional without closed form (Gauss quadrature): the area weighted by a smooth density.
 struct Weighted_area
@@ -293,17 +273,8 @@ TEST_CASE("parallel basin search: the moves of the sequential search, the same a
 
 TEST_CASE("parallel tangent-plane refinement: the same planes and optimum", "[variational][surface][parallel]")
 {
-  const double a = 1.2;
-  VM::Surface_problem_3 P;
-  P.domain = CGAL::Bbox_2(-a, -a, a, a);
-  P.zmin = -3;
-  P.zmax = 3;
-  P.boundary_segments_per_side = 4;
-  P.lower_boundary = [](double x, double y) { return std::log(std::cos(y) / std::cos(x)); };
-  VM::Surface_plane_options_3 o;
-  o.distribution = VM::Plane_distribution_3::slope_limited;
-  o.max_slope = 3;
-  o.pencil_fraction = 0.2;
+  const VM::Surface_problem_3 P = MDCS_test::tall_scherk_problem();
+  const VM::Surface_plane_options_3 o = MDCS_test::tall_scherk_planes();
   VM::Tangent_refinement_options_3 to;
   to.rounds = 2;
   const VM::Tangent_refinement_result_3 seq = VM::refine_surface_by_tangent_planes_3(P, VM::Area_functional_3(), 44, to, o);

@@ -15,11 +15,11 @@
 #include <vector>
 
 namespace VM = CGAL::Variational_minimization;
-typedef VM::Plane_arrangement_3 Arr;
+typedef VM::Plane_arrangement_3 Arr3;
 
 namespace {
 
-const std::int64_t L = Arr::lattice_size;
+const std::int64_t L = Arr3::lattice_size;
 
 VM::Lattice_plane_3 plane(std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d)
 {
@@ -47,14 +47,14 @@ std::vector<VM::Lattice_plane_3> random_planes(std::size_t n, std::uint64_t seed
 
 // Signed volume of a cell by the divergence theorem (fan triangles of each facet, outward orientation from the
 // facet plane and the side of the cell).
-double cell_volume(const Arr& A, Arr::Cell_index c)
+double cell_volume(const Arr3& A, Arr3::Cell_index c)
 {
   double vol = 0;
-  for(Arr::Facet_index f : A.cell_facets(c)) {
-    const Arr::Facet& x = A.facet(f);
+  for(Arr3::Facet_index f : A.cell_facets(c)) {
+    const Arr3::Facet& x = A.facet(f);
     const VM::Lattice_plane_3& P = A.plane(x.plane);
     const double out = (x.negative_cell == c) ? 1.0 : -1.0; // outward normal = +/- (a, b, c)
-    const std::vector<Arr::Vertex_index> v = A.facet_vertices(f);
+    const std::vector<Arr3::Vertex_index> v = A.facet_vertices(f);
     const auto& p0 = A.point(v[0]);
     for(std::size_t k = 1; k + 1 < v.size(); ++k) {
       const auto& p1 = A.point(v[k]);
@@ -71,22 +71,22 @@ double cell_volume(const Arr& A, Arr::Cell_index c)
 }
 
 // Checks every invariant of the complex; returns the number of cells.
-std::size_t check_complex(const Arr& A, bool check_convexity)
+std::size_t check_complex(const Arr3& A, bool check_convexity)
 {
   double volume = 0;
   std::size_t boundary = 0;
   std::vector<int> wall_area_count(6, 0);
-  for(Arr::Cell_index c = 0; c < A.number_of_cells(); ++c) {
+  for(Arr3::Cell_index c = 0; c < A.number_of_cells(); ++c) {
     const double v = cell_volume(A, c);
     CHECK(v > 0);
     volume += v;
-    std::set<Arr::Vertex_index> vertices;
+    std::set<Arr3::Vertex_index> vertices;
     std::size_t half_edges = 0;
-    for(Arr::Facet_index f : A.cell_facets(c)) {
-      const Arr::Facet& x = A.facet(f);
+    for(Arr3::Facet_index f : A.cell_facets(c)) {
+      const Arr3::Facet& x = A.facet(f);
       CHECK((x.negative_cell == c || x.positive_cell == c)); // adjacency symmetric
       CHECK(x.negative_cell != x.positive_cell);
-      for(Arr::Vertex_index w : A.facet_vertices(f)) vertices.insert(w);
+      for(Arr3::Vertex_index w : A.facet_vertices(f)) vertices.insert(w);
       half_edges += A.facet_degree(f);
       CHECK(A.facet_degree(f) >= 3);
     }
@@ -94,23 +94,23 @@ std::size_t check_complex(const Arr& A, bool check_convexity)
     CHECK(long(vertices.size()) - long(half_edges / 2) + long(A.cell_facets(c).size()) == 2);
     CHECK(half_edges % 2 == 0);
     if(check_convexity)
-      for(Arr::Facet_index f : A.cell_facets(c)) {
-        const Arr::Facet& x = A.facet(f);
+      for(Arr3::Facet_index f : A.cell_facets(c)) {
+        const Arr3::Facet& x = A.facet(f);
         const int inside = (x.negative_cell == c) ? -1 : 1;
-        for(Arr::Vertex_index w : vertices) {
+        for(Arr3::Vertex_index w : vertices) {
           const int s = A.side(w, x.plane);
           CHECK((s == 0 || s == inside));
         }
-        for(Arr::Vertex_index w : A.facet_vertices(f)) CHECK(A.side(w, x.plane) == 0);
+        for(Arr3::Vertex_index w : A.facet_vertices(f)) CHECK(A.side(w, x.plane) == 0);
       }
   }
-  for(Arr::Facet_index f = 0; f < A.number_of_facets(); ++f) {
-    const Arr::Facet& x = A.facet(f);
+  for(Arr3::Facet_index f = 0; f < A.number_of_facets(); ++f) {
+    const Arr3::Facet& x = A.facet(f);
     const bool on_wall = A.is_boundary_facet(f);
-    CHECK(on_wall == (x.negative_cell == Arr::null_index || x.positive_cell == Arr::null_index));
+    CHECK(on_wall == (x.negative_cell == Arr3::null_index || x.positive_cell == Arr3::null_index));
     if(on_wall) ++boundary;
-    for(Arr::Cell_index c : {x.negative_cell, x.positive_cell})
-      if(c != Arr::null_index) {
+    for(Arr3::Cell_index c : {x.negative_cell, x.positive_cell})
+      if(c != Arr3::null_index) {
         const auto& list = A.cell_facets(c);
         CHECK(std::count(list.begin(), list.end(), f) == 1);
       }
@@ -124,7 +124,7 @@ std::size_t check_complex(const Arr& A, bool check_convexity)
 
 TEST_CASE("Plane_arrangement_3: the box alone", "[variational][surface][arrangement]")
 {
-  const Arr A;
+  const Arr3 A;
   CHECK(A.number_of_cells() == 1);
   CHECK(A.number_of_facets() == 6);
   CHECK(A.number_of_vertices() == 8);
@@ -135,11 +135,11 @@ TEST_CASE("Plane_arrangement_3: the box alone", "[variational][surface][arrangem
 TEST_CASE("Plane_arrangement_3: random planes keep every invariant", "[variational][surface][arrangement]")
 {
   for(std::uint64_t seed : {1u, 2u, 3u}) {
-    const Arr A(random_planes(25, seed));
+    const Arr3 A(random_planes(25, seed));
     check_complex(A, true);
     CHECK(A.number_of_cells() > 200);
   }
-  const Arr B(random_planes(60, 7));
+  const Arr3 B(random_planes(60, 7));
   check_complex(B, false);
 }
 
@@ -148,10 +148,10 @@ TEST_CASE("Plane_arrangement_3: insertions after a construction rebuild the rele
 {
   for(std::uint64_t seed : {4u, 5u}) {
     const std::vector<VM::Lattice_plane_3> planes = random_planes(40, seed);
-    const Arr all(planes);
+    const Arr3 all(planes);
     CHECK(all.number_of_tree_nodes() == 0); // released by the constructor
-    Arr A(std::vector<VM::Lattice_plane_3>(planes.begin(), planes.begin() + 20));
-    Arr C; // incremental from the box: the tree is kept
+    Arr3 A(std::vector<VM::Lattice_plane_3>(planes.begin(), planes.begin() + 20));
+    Arr3 C; // incremental from the box: the tree is kept
     for(std::size_t i = 0; i < planes.size(); ++i) {
       if(i >= 20) CHECK(A.insert_plane(planes[i]));
       CHECK(C.insert_plane(planes[i]));
@@ -194,7 +194,7 @@ TEST_CASE("Plane_arrangement_3: cell count of a simple arrangement", "[variation
         }
     if(!simple) continue;
     ++tested;
-    const Arr A(planes);
+    const Arr3 A(planes);
     const std::size_t n = 7;
     CHECK(A.number_of_cells() == 1 + n + n * (n - 1) / 2 + n * (n - 1) * (n - 2) / 6);
     check_complex(A, true);
@@ -212,13 +212,13 @@ TEST_CASE("Plane_arrangement_3: degenerate configurations", "[variational][surfa
     planes.push_back(plane(a, b, 0, -(a + b) * (L / 2)));
   }
   {
-    const Arr A(planes);
+    const Arr3 A(planes);
     CHECK(A.number_of_cells() == std::size_t(2 * k));
     check_complex(A, true);
   }
   planes.push_back(plane(0, 0, 1, -L / 3));
   {
-    const Arr A(planes);
+    const Arr3 A(planes);
     CHECK(A.number_of_cells() == std::size_t(4 * k));
     check_complex(A, true);
   }
@@ -229,7 +229,7 @@ TEST_CASE("Plane_arrangement_3: degenerate configurations", "[variational][surfa
     plane(0, 1, -1, 0),           plane(1, 0, -1, 0),         plane(3, 0, 0, -3 * L), plane(1, 1, 1, -3 * L),
     plane(1, 1, -1, -L / 2),      plane(1, 1, -2, 0),         plane(1, 1, -3, L / 2), plane(0, 0, 1, -L / 2),
     plane(5, 3, -8, 0),           plane(1, 2, 3, -3 * L)};
-  const Arr A(d);
+  const Arr3 A(d);
   CHECK(!A.is_plane_used(6 + 3)); // duplicate of plane 6 + 2
   CHECK(!A.is_plane_used(6 + 6)); // the wall X = L
   CHECK(!A.is_plane_used(6 + 7)); // touches the box only at the corner (L, L, L)
@@ -237,7 +237,7 @@ TEST_CASE("Plane_arrangement_3: degenerate configurations", "[variational][surfa
   check_complex(A, true);
   // The same planes inserted in another order give the same complex size.
   std::vector<VM::Lattice_plane_3> r(d.rbegin(), d.rend());
-  const Arr B(r);
+  const Arr3 B(r);
   CHECK(B.number_of_cells() == A.number_of_cells());
   CHECK(B.number_of_facets() == A.number_of_facets());
   CHECK(B.number_of_vertices() == A.number_of_vertices());
@@ -245,12 +245,12 @@ TEST_CASE("Plane_arrangement_3: degenerate configurations", "[variational][surfa
 
 TEST_CASE("Plane_arrangement_3: the filtered predicate agrees with GMP", "[variational][surface][arrangement]")
 {
-  const Arr A(random_planes(20, 5));
+  const Arr3 A(random_planes(20, 5));
   std::mt19937_64 rng(3);
   std::size_t zeros = 0;
   for(int trial = 0; trial < 3000; ++trial) {
-    const Arr::Vertex_index v = Arr::Vertex_index(rng() % A.number_of_vertices());
-    const Arr::Plane_index p = Arr::Plane_index(rng() % A.number_of_planes());
+    const Arr3::Vertex_index v = Arr3::Vertex_index(rng() % A.number_of_vertices());
+    const Arr3::Plane_index p = Arr3::Plane_index(rng() % A.number_of_planes());
     const auto& t = A.vertex_planes(v);
     // Cramer's rule and the 4x4 sign with GMP integers.
     CGAL::Gmpz m[3][4];
@@ -273,17 +273,17 @@ TEST_CASE("Plane_arrangement_3: the filtered predicate agrees with GMP", "[varia
     if(expected == 0) ++zeros;
   }
   // The vertex planes themselves give exact zeros.
-  for(Arr::Vertex_index v = 0; v < A.number_of_vertices(); v += 7)
-    for(Arr::Plane_index p : A.vertex_planes(v)) CHECK(A.side(v, p) == 0);
+  for(Arr3::Vertex_index v = 0; v < A.number_of_vertices(); v += 7)
+    for(Arr3::Plane_index p : A.vertex_planes(v)) CHECK(A.side(v, p) == 0);
   CHECK(zeros > 0);
 }
 
 TEST_CASE("Plane_arrangement_3: bad planes are rejected", "[variational][surface][arrangement]")
 {
-  CHECK_THROWS_AS(Arr({plane(0, 0, 0, 5)}), std::invalid_argument);
-  CHECK_THROWS_AS(Arr({plane(std::int64_t(1) << 30, 1, 1, 0)}), std::invalid_argument);
-  CHECK_THROWS_AS(Arr({plane(1, 1, 1, std::int64_t(1) << 50)}), std::invalid_argument);
-  Arr A;
+  CHECK_THROWS_AS(Arr3({plane(0, 0, 0, 5)}), std::invalid_argument);
+  CHECK_THROWS_AS(Arr3({plane(std::int64_t(1) << 30, 1, 1, 0)}), std::invalid_argument);
+  CHECK_THROWS_AS(Arr3({plane(1, 1, 1, std::int64_t(1) << 50)}), std::invalid_argument);
+  Arr3 A;
   CHECK(A.insert_plane(plane(1, 0, 0, -L / 2)));
   CHECK(!A.insert_plane(plane(-2, 0, 0, L)));
   CHECK(A.number_of_cells() == 2);
@@ -292,8 +292,8 @@ TEST_CASE("Plane_arrangement_3: bad planes are rejected", "[variational][surface
 TEST_CASE("Plane_arrangement_3: progress and cancellation", "[variational][surface][arrangement]")
 {
   int calls = 0;
-  const Arr A(random_planes(10, 1), [&](const char*, double) { ++calls; return true; });
+  const Arr3 A(random_planes(10, 1), [&](const char*, double) { ++calls; return true; });
   CHECK(calls >= 2);
-  CHECK_THROWS_AS(Arr(random_planes(10, 1), [](const char*, double f) { return f < 0.5; }),
+  CHECK_THROWS_AS(Arr3(random_planes(10, 1), [](const char*, double f) { return f < 0.5; }),
                   CGAL::MDCS::Operation_cancelled);
 }

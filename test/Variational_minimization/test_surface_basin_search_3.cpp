@@ -3,6 +3,8 @@
 // deterministic for a given seed, exactly plain plane selection without sweeps, and bad input rejected.
 #include <catch2/catch.hpp>
 
+#include <MDCS_test/surface_problems.h>
+
 #include <CGAL/Variational_minimization/relax_surface_3.h>
 #include <CGAL/Variational_minimization/search_surface_basins_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
@@ -17,26 +19,10 @@
 #include <vector>
 
 namespace VM = CGAL::Variational_minimization;
+using MDCS_test::blob_planes;
+using MDCS_test::blob_problem;
 
 namespace {
-
-VM::Surface_problem_3 blob_problem()
-{
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 1;
-  P.lower_boundary = [](double, double) { return 0.0; };
-  P.upper_boundary = [](double, double) { return 1.0; };
-  return P;
-}
-
-VM::Surface_plane_options_3 blob_planes(std::uint64_t seed)
-{
-  VM::Surface_plane_options_3 o;
-  o.distribution = VM::Plane_distribution_3::slope_limited;
-  o.max_slope = 2;
-  o.seed = seed;
-  return o;
-}
 
 VM::Surface_basin_search_options_3 small_search()
 {

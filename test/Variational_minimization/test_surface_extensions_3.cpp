@@ -5,6 +5,8 @@
 // candidates.
 #include <catch2/catch.hpp>
 
+#include <MDCS_test/surface_problems.h>
+
 #include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/refine_surface_3.h>
@@ -121,10 +123,7 @@ TEST_CASE("refine_surface_3: no worse than its runs; the envelope only restricts
 
 TEST_CASE("blob problem: the global solve beats 100 random-start local descents", "[variational][surface][blobs]")
 {
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 1;
-  P.lower_boundary = [](double, double) { return 0.0; };
-  P.upper_boundary = [](double, double) { return 1.0; };
+  const VM::Surface_problem_3 P = MDCS_test::blob_problem();
   const auto G = VM::random_blob_functional_3(P, 4, 2, 0.12, -1.5, 3);
   VM::Surface_relaxation_options_3 ro;
   ro.grids = {8};

@@ -4,6 +4,8 @@
 // standard errors of the closed form for a linear one and of the Gauss rule for a smooth one, converging like
 // 1/sqrt(samples), deterministic per facet (so a whole solve has energy == cut value), seed-dependent, and bad
 // input rejected.
+#include <MDCS_test/test_numbers.h>
+
 #include <catch2/catch.hpp>
 
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
@@ -21,7 +23,7 @@ namespace VM = CGAL::Variational_minimization;
 
 namespace {
 
-double rel(double a, double b) { return a == b ? 0 : std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
+using MDCS_test::relative_difference;
 
 const std::vector<std::array<double, 2>> pentagon = {{{0, 0}}, {{1, 0}}, {{1.3, 0.6}}, {{0.5, 1.1}}, {{-0.2, 0.5}}};
 
@@ -41,9 +43,9 @@ TEST_CASE("Monte Carlo weights: exact, unbiased, converging, deterministic", "[v
   // Constant on the facet (area): exact whatever the samples.
   const VM::Area_functional_3 area;
   const double closed = VM::surface_polygon_integral_3(area, 0.3, -0.7, 0.2, pentagon);
-  CHECK(rel(VM::surface_polygon_integral_3(VM::make_monte_carlo_functional_3(area, 1), 0.3, -0.7, 0.2, pentagon),
+  CHECK(relative_difference(VM::surface_polygon_integral_3(VM::make_monte_carlo_functional_3(area, 1), 0.3, -0.7, 0.2, pentagon),
             closed) <= 1e-12);
-  CHECK(rel(VM::surface_polygon_integral_3(VM::make_monte_carlo_functional_3(area, 37), 0.3, -0.7, 0.2, pentagon),
+  CHECK(relative_difference(VM::surface_polygon_integral_3(VM::make_monte_carlo_functional_3(area, 37), 0.3, -0.7, 0.2, pentagon),
             closed) <= 1e-12);
   // Linear in f (membrane): against the closed form, within 4 standard errors (the deviation of G over the
   // pentagon is below 0.5, its area about 1.2).
@@ -61,7 +63,7 @@ TEST_CASE("Monte Carlo weights: exact, unbiased, converging, deterministic", "[v
   // about like 1/sqrt(samples): mean over 20 seeds of the absolute error, 256 against 16384 samples (ratio 8 expected).
   const Bump bump;
   const double gauss = VM::surface_polygon_integral_3(bump, 0.1, 0.2, 0.3, pentagon, 5);
-  CHECK(rel(gauss, VM::surface_polygon_integral_3(bump, 0.1, 0.2, 0.3, pentagon, 4)) <= 1e-10);
+  CHECK(relative_difference(gauss, VM::surface_polygon_integral_3(bump, 0.1, 0.2, 0.3, pentagon, 4)) <= 1e-10);
   double coarse = 0, fine = 0;
   for(std::uint64_t seed = 1; seed <= 20; ++seed) {
     coarse += std::abs(VM::surface_polygon_integral_3(VM::Monte_carlo_functional_3<Bump>(bump, 256, seed), 0.1, 0.2,
@@ -99,15 +101,15 @@ TEST_CASE("Monte Carlo weights: a whole solve", "[variational][surface][monte_ca
   // The lean path computes the surface's weights a second time: equal only if each facet's estimate is fixed.
   const VM::Minimal_surface_3 lean = VM::minimize_surface_functional_3(A, P, mc);
   REQUIRE(lean.is_feasible);
-  CHECK(rel(lean.energy, lean.solver_value) <= 1e-9);
-  CHECK(rel(lean.projected_area, P.domain_area()) <= 1e-9);
+  CHECK(relative_difference(lean.energy, lean.solver_value) <= 1e-9);
+  CHECK(relative_difference(lean.projected_area, P.domain_area()) <= 1e-9);
   // The weight vector path gives the same optimum value.
   const VM::Minimal_surface_3 vec = VM::minimize_surface_functional_3(A, VM::surface_facet_weights_3(A, P, mc), P);
-  CHECK(rel(vec.solver_value, lean.solver_value) <= 1e-9);
+  CHECK(relative_difference(vec.solver_value, lean.solver_value) <= 1e-9);
   // And it is close to the quadrature solve (32 samples per facet).
   const VM::Minimal_surface_3 gauss = VM::minimize_surface_functional_3(A, P, G);
   INFO("Monte Carlo " << lean.energy << ", Gauss " << gauss.energy);
-  CHECK(rel(lean.energy, gauss.energy) <= 0.02);
+  CHECK(relative_difference(lean.energy, gauss.energy) <= 0.02);
 }
 
 TEST_CASE("Shifted_functional_3: a functional bounded below", "[variational][surface][shift]")
@@ -126,13 +128,13 @@ TEST_CASE("Shifted_functional_3: a functional bounded below", "[variational][sur
   const VM::Minimal_surface_3 shifted = VM::minimize_surface_functional_3(A, P, VM::make_shifted_functional_3(G, 2.0));
   REQUIRE(area.is_feasible);
   REQUIRE(shifted.is_feasible);
-  CHECK(rel(shifted.energy, area.energy) <= 1e-9);
+  CHECK(relative_difference(shifted.energy, area.energy) <= 1e-9);
   CHECK(shifted.facets == area.facets);
   // The original functional's value of the optimum: the shifted energy minus shift |Ω|.
   CHECK(std::abs((shifted.energy - 2.0 * P.domain_area()) - (area.energy - 4.0)) <= 1e-9);
   // With a closed form (the area's), the shifted functional keeps one: the same weights.
   const VM::Shifted_functional_3<VM::Area_functional_3> closed(VM::Area_functional_3(), 0.25);
-  CHECK(rel(VM::surface_polygon_integral_3(closed, 0.3, -0.7, 0.2, pentagon),
+  CHECK(relative_difference(VM::surface_polygon_integral_3(closed, 0.3, -0.7, 0.2, pentagon),
             VM::surface_polygon_integral_3(VM::Area_functional_3(), 0.3, -0.7, 0.2, pentagon) +
               0.25 * std::abs(VM::internal::polygon_area_2(pentagon))) <= 1e-12);
   CHECK(closed(0.1, 0.3, -0.7, 0.5, 0.5) == VM::Area_functional_3()(0.1, 0.3, -0.7, 0.5, 0.5) + 0.25);

@@ -17,6 +17,8 @@
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
 #include <MDCS_test/polygon_geometry.h>
+#include <MDCS_test/surface_problems.h>
+#include <MDCS_test/test_numbers.h>
 
 #include <algorithm>
 #include <array>
@@ -31,7 +33,7 @@ namespace VM = CGAL::Variational_minimization;
 
 namespace {
 
-double rel(double a, double b) { return a == b ? 0 : std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
+using MDCS_test::relative_difference;
 
 // The energy of the generic path with a given engine (Flow_network + solve_min_cut).
 template <class Engine>
@@ -62,9 +64,7 @@ TEST_CASE("minimize_surface_functional_3: pseudoflow on the arrangement agrees w
   };
   std::vector<Case> cases;
   cases.push_back({"Scherk, slope-limited", VM::scherk_surface_problem_3(4), VM::Plane_distribution_3::slope_limited, 60});
-  VM::Surface_problem_3 saddle;
-  saddle.boundary_segments_per_side = 3;
-  saddle.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
+  const VM::Surface_problem_3 saddle = MDCS_test::saddle_problem(3);
   cases.push_back({"saddle, isotropic", saddle, VM::Plane_distribution_3::isotropic, 50});
   VM::Surface_problem_3 relaxed;
   relaxed.boundary_segments_per_side = 2;
@@ -89,13 +89,13 @@ TEST_CASE("minimize_surface_functional_3: pseudoflow on the arrangement agrees w
     const VM::Minimal_surface_3 lean = VM::minimize_surface_functional_3(A, c.problem, VM::Area_functional_3());
     REQUIRE(pf.is_feasible);
     REQUIRE(lean.is_feasible);
-    CHECK(rel(pf.solver_value, pr.solver_value) <= 1e-9);
-    CHECK(rel(pf.solver_value, bk.solver_value) <= 1e-9);
+    CHECK(relative_difference(pf.solver_value, pr.solver_value) <= 1e-9);
+    CHECK(relative_difference(pf.solver_value, bk.solver_value) <= 1e-9);
     CHECK(pf.facets == pr.facets); // the same minimal source side
     CHECK(lean.facets == pf.facets);
     CHECK(lean.solver_value == pf.solver_value);
     CHECK(lean.energy == pf.energy);
-    CHECK(rel(lean.energy, lean.solver_value) <= 1e-12);
+    CHECK(relative_difference(lean.energy, lean.solver_value) <= 1e-12);
     // Another engine through the functional overload takes the generic path.
     const VM::Minimal_surface_3 lean_pr =
       VM::minimize_surface_functional_3(A, c.problem, VM::Area_functional_3(), 1, CGAL::Min_cut::Push_relabel_max_flow());
@@ -155,14 +155,14 @@ TEST_CASE("minimize_surface_functional_3: pseudoflow on the arrangement of a pol
     const VM::Minimal_surface_3 lean = VM::minimize_surface_functional_3(A, P, G);
     REQUIRE(pf.is_feasible);
     REQUIRE(lean.is_feasible);
-    CHECK(rel(pf.solver_value, pr.solver_value) <= 1e-9);
-    CHECK(rel(pf.solver_value, bk.solver_value) <= 1e-9);
+    CHECK(relative_difference(pf.solver_value, pr.solver_value) <= 1e-9);
+    CHECK(relative_difference(pf.solver_value, bk.solver_value) <= 1e-9);
     // (The facet sets may differ from push-relabel's by facets of weight ~1e-10: polygon pencils make slivers,
     // and ties within rounding go either way.)
     CHECK(lean.facets == pf.facets);
     CHECK(lean.energy == pf.energy);
-    CHECK(rel(lean.energy, lean.solver_value) <= 1e-12);
-    CHECK(rel(lean.projected_area, P.domain_area()) <= 1e-9);
+    CHECK(relative_difference(lean.energy, lean.solver_value) <= 1e-12);
+    CHECK(relative_difference(lean.projected_area, P.domain_area()) <= 1e-9);
     // With fixed saddle data the surface is not flat: the cut really crosses interior facets over the polygon.
     if(!c.relaxed) CHECK(lean.energy > P.domain_area() * (1 + 1e-6));
   }
@@ -269,10 +269,7 @@ TEST_CASE("Growable_array_3: matches std::vector through growth, copies, moves a
 TEST_CASE("select_planes_3: planes near the optimum keep the energy non-increasing and are reproducible",
           "[variational][surface]")
 {
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 1;
-  P.lower_boundary = [](double, double) { return 0.0; };
-  P.upper_boundary = [](double, double) { return 1.0; };
+  const VM::Surface_problem_3 P = MDCS_test::blob_problem();
   const VM::Density_weighted_area_functional_3 G = VM::random_blob_functional_3(P, 4, 2, 0.1, -1.5, 3);
   VM::Surface_plane_options_3 o;
   o.distribution = VM::Plane_distribution_3::slope_limited;

@@ -14,6 +14,7 @@
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
 #include <MDCS_test/polygon_geometry.h>
+#include <MDCS_test/test_numbers.h>
 
 #include <cmath>
 #include <limits>
@@ -26,22 +27,22 @@ typedef std::vector<std::array<double, 2>> Polygon;
 
 namespace {
 
-double rel(double a, double b) { return a == b ? 0 : std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
+using MDCS_test::relative_difference;
 
 const Polygon L_shape = {{{0, 0}}, {{1, 0}}, {{1, 0.5}}, {{0.5, 0.5}}, {{0.5, 1}}, {{0, 1}}};
 
 using MDCS_test::in_polygon;
 
 template <class Functional, class Engine = CGAL::Min_cut::Default_max_flow_engine>
-VM::Minimal_surface_3 solve(const VM::Surface_problem_3& P, const std::vector<VM::Lattice_plane_3>& planes,
+VM::Minimal_surface_3 solve_on_polygon(const VM::Surface_problem_3& P, const std::vector<VM::Lattice_plane_3>& planes,
                             const Functional& G, Engine engine = Engine())
 {
   const VM::Plane_arrangement_3 A = VM::build_surface_arrangement_3(P, planes);
   const std::vector<double> w = VM::surface_facet_weights_3(A, P, G);
   VM::Minimal_surface_3 s = VM::minimize_surface_functional_3(A, w, P, engine);
   REQUIRE(s.is_feasible);
-  CHECK(rel(s.energy, s.solver_value) <= 1e-9);
-  CHECK(rel(s.projected_area, P.domain_area()) <= 1e-9);
+  CHECK(relative_difference(s.energy, s.solver_value) <= 1e-9);
+  CHECK(relative_difference(s.projected_area, P.domain_area()) <= 1e-9);
   for(const auto& p : s.points) {
     CHECK(in_polygon(P.domain_polygon, p[0], p[1]));
     CHECK(p[2] >= P.zmin - 1e-9);
@@ -90,7 +91,7 @@ TEST_CASE("Surface_problem_3: bad domain polygons get a clear error", "[variatio
   Polygon cw(L_shape.rbegin(), L_shape.rend());
   P.set_domain_polygon(cw);
   CHECK_NOTHROW(P.validate());
-  CHECK(rel(P.domain_area(), 0.75) <= 1e-15);
+  CHECK(relative_difference(P.domain_area(), 0.75) <= 1e-15);
 }
 
 TEST_CASE("minimize_surface_functional_3: linear boundary data gives the plane on L-shaped and triangular domains",
@@ -110,13 +111,13 @@ TEST_CASE("minimize_surface_functional_3: linear boundary data gives the plane o
       P.boundary_segments_per_side = 4;
       P.lower_boundary = [](double x, double y) { return 0.25 + 0.5 * x + 0.25 * y; };
       P.set_domain_polygon(d.first);
-      CHECK(rel(P.domain_area(), d.second) <= 1e-15);
+      CHECK(relative_difference(P.domain_area(), d.second) <= 1e-15);
       VM::Surface_plane_options_3 o;
       o.seed = seed;
       o.distribution = seed == 1 ? VM::Plane_distribution_3::isotropic : VM::Plane_distribution_3::slope_limited;
-      const VM::Minimal_surface_3 s = solve(P, VM::surface_planes_3(P, 50, o), VM::Area_functional_3());
+      const VM::Minimal_surface_3 s = solve_on_polygon(P, VM::surface_planes_3(P, 50, o), VM::Area_functional_3());
       INFO("domain with " << d.first.size() << " vertices, seed " << seed);
-      CHECK(rel(s.energy, std::sqrt(1 + 0.25 + 0.0625) * d.second) <= 1e-9);
+      CHECK(relative_difference(s.energy, std::sqrt(1 + 0.25 + 0.0625) * d.second) <= 1e-9);
       for(const auto& p : s.points) CHECK(std::abs(p[2] - (0.25 + 0.5 * p[0] + 0.25 * p[1])) <= 1e-9);
     }
 }
@@ -140,8 +141,8 @@ TEST_CASE("minimize_surface_functional_3: a polygon equal to the box gives the r
   const VM::Minimal_surface_3 q = VM::minimize_surface_functional_3(A, Q, VM::Area_functional_3());
   REQUIRE(r.is_feasible);
   REQUIRE(q.is_feasible);
-  CHECK(rel(r.energy, q.energy) <= 1e-9);
-  CHECK(rel(q.energy, q.solver_value) <= 1e-9);
+  CHECK(relative_difference(r.energy, q.energy) <= 1e-9);
+  CHECK(relative_difference(q.energy, q.solver_value) <= 1e-9);
   CHECK(r.energy >= 1.117); // at least the minimal area spanning the boundary loop
 }
 
@@ -156,20 +157,20 @@ TEST_CASE("minimize_surface_functional_3: L-shaped domain, duality, single-value
   o.seed = 3;
   o.pencil_fraction = 0.3;
   const std::vector<VM::Lattice_plane_3> planes = VM::surface_planes_3(P, 100, o);
-  const VM::Minimal_surface_3 pf = solve(P, planes, VM::Area_functional_3());
-  const VM::Minimal_surface_3 pr = solve(P, planes, VM::Area_functional_3(), CGAL::Min_cut::Push_relabel_max_flow());
-  const VM::Minimal_surface_3 bk = solve(P, planes, VM::Area_functional_3(), CGAL::Min_cut::Boykov_kolmogorov_max_flow());
-  CHECK(rel(pf.energy, pr.energy) <= 1e-9);
-  CHECK(rel(pf.energy, bk.energy) <= 1e-9);
+  const VM::Minimal_surface_3 pf = solve_on_polygon(P, planes, VM::Area_functional_3());
+  const VM::Minimal_surface_3 pr = solve_on_polygon(P, planes, VM::Area_functional_3(), CGAL::Min_cut::Push_relabel_max_flow());
+  const VM::Minimal_surface_3 bk = solve_on_polygon(P, planes, VM::Area_functional_3(), CGAL::Min_cut::Boykov_kolmogorov_max_flow());
+  CHECK(relative_difference(pf.energy, pr.energy) <= 1e-9);
+  CHECK(relative_difference(pf.energy, bk.energy) <= 1e-9);
   // The functional path (no weight vector given) gives the same optimum.
   const VM::Plane_arrangement_3 A(planes);
   const VM::Minimal_surface_3 lean = VM::minimize_surface_functional_3(A, P, VM::Area_functional_3());
-  CHECK(rel(lean.energy, pf.energy) <= 1e-9);
+  CHECK(relative_difference(lean.energy, pf.energy) <= 1e-9);
   // The area lies between the flat area (a lower bound) and the optimum on the first planes only (the edges, the
   // triangulated boundary loop and the pencils): more planes, more candidate functions.
   const std::vector<VM::Lattice_plane_3> first(planes.begin(),
                                                planes.begin() + std::ptrdiff_t(VM::surface_pencil_count_3(P, 100, o)));
-  const VM::Minimal_surface_3 coarse = solve(P, first, VM::Area_functional_3());
+  const VM::Minimal_surface_3 coarse = solve_on_polygon(P, first, VM::Area_functional_3());
   INFO("energies " << coarse.energy << " (" << first.size() << " planes) -> " << pf.energy);
   CHECK(pf.energy > 0.75);
   CHECK(pf.energy <= coarse.energy * (1 + 1e-12));
@@ -192,8 +193,8 @@ TEST_CASE("minimize_surface_functional_3: relaxed boundary on a polygon, G not e
   const auto G = [](double, double fx, double fy, double x, double y) {
     return (x > 0.5 + 1e-12 && y > 0.5 + 1e-12) ? -1.0 : std::sqrt(1 + fx * fx + fy * fy);
   };
-  const VM::Minimal_surface_3 s = solve(P, VM::surface_planes_3(P, 60, o), G);
-  CHECK(rel(s.energy, 0.75) <= 1e-9);
+  const VM::Minimal_surface_3 s = solve_on_polygon(P, VM::surface_planes_3(P, 60, o), G);
+  CHECK(relative_difference(s.energy, 0.75) <= 1e-9);
   for(const auto& p : s.points) {
     CHECK(p[2] >= 0.3 - 1e-9);
     CHECK(p[2] <= 0.7 + 1e-9);
@@ -201,7 +202,7 @@ TEST_CASE("minimize_surface_functional_3: relaxed boundary on a polygon, G not e
   // A fixed boundary with a bump: the surface leaves the plane, still over the L only.
   P.upper_boundary = nullptr;
   P.lower_boundary = [](double x, double y) { return 0.3 + 0.4 * x * y; };
-  const VM::Minimal_surface_3 b = solve(P, VM::surface_planes_3(P, 60, o), G);
+  const VM::Minimal_surface_3 b = solve_on_polygon(P, VM::surface_planes_3(P, 60, o), G);
   CHECK(b.energy > 0.75);
 }
 

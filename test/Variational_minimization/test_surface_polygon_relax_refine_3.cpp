@@ -17,6 +17,7 @@
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
 #include <MDCS_test/polygon_geometry.h>
+#include <MDCS_test/test_numbers.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,10 +29,10 @@ typedef std::vector<std::array<double, 2>> Polygon;
 
 namespace {
 
-double rel(double a, double b) { return a == b ? 0 : std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
+using MDCS_test::relative_difference;
 
-const double pi = 3.14159265358979323846;
-const Polygon L_shape = {{{0, 0}}, {{1, 0}}, {{1, 0.5}}, {{0.5, 0.5}}, {{0.5, 1}}, {{0, 1}}};
+using MDCS_test::pi;
+const Polygon L_shaped_domain = {{{0, 0}}, {{1, 0}}, {{1, 0.5}}, {{0.5, 0.5}}, {{0.5, 1}}, {{0, 1}}};
 const Polygon triangle = {{{0, 0}}, {{1, 0}}, {{0, 1}}};
 const Polygon hexagon = {{{0.25, 0}}, {{0.75, 0}}, {{1, 0.5}}, {{0.75, 1}}, {{0.25, 1}}, {{0, 0.5}}};
 const Polygon u_shape = {{{0, 0}}, {{1, 0}}, {{1, 1}}, {{0.75, 1}}, {{0.75, 0.25}}, {{0.25, 0.25}}, {{0.25, 1}},
@@ -72,7 +73,7 @@ void check_relaxed_mesh(const VM::Surface_problem_3& P, const VM::Relaxed_surfac
   REQUIRE(!r.triangles.empty());
   REQUIRE(r.heights.size() == r.nodes.size());
   const VM::Minimal_surface_3 m = VM::grid_surface_mesh_3(P, r);
-  CHECK(rel(m.projected_area, P.domain_area()) <= 1e-12);
+  CHECK(relative_difference(m.projected_area, P.domain_area()) <= 1e-12);
   for(const auto& p : m.points) {
     CHECK(in_polygon(P.domain_polygon, p[0], p[1]));
     CHECK(p[2] >= P.zmin);
@@ -88,7 +89,7 @@ void check_relaxed_mesh(const VM::Surface_problem_3& P, const VM::Relaxed_surfac
 TEST_CASE("polygon_relaxation_mesh_3: boundary nodes on the edges, area, angles, edge lengths",
           "[variational][surface][polygon][relaxation]")
 {
-  for(const Polygon& poly : {L_shape, triangle, hexagon, u_shape})
+  for(const Polygon& poly : {L_shaped_domain, triangle, hexagon, u_shape})
     for(int n : {5, 20}) {
       VM::Surface_problem_3 P;
       P.lower_boundary = [](double, double) { return 0.5; };
@@ -110,7 +111,7 @@ TEST_CASE("polygon_relaxation_mesh_3: boundary nodes on the edges, area, angles,
           max_edge = std::max(max_edge, std::hypot(ux, uy));
         }
       }
-      CHECK(rel(area, P.domain_area()) <= 1e-13);
+      CHECK(relative_difference(area, P.domain_area()) <= 1e-13);
       CHECK(std::count(used.begin(), used.end(), 1) == std::ptrdiff_t(m.size()));
       // The mesher's guarantees: angles >= arcsin(sqrt(0.125)) = 20.7 degrees except at input vertices with a
       // smaller angle (none here: the smallest is 45), edges no longer than the grid square's diagonal.
@@ -136,7 +137,7 @@ TEST_CASE("mesh_energy_3: the gradient is the derivative of the energy", "[varia
 {
   VM::Surface_problem_3 P;
   P.lower_boundary = [](double, double) { return 0.5; };
-  P.set_domain_polygon(L_shape);
+  P.set_domain_polygon(L_shaped_domain);
   const VM::internal::Triangle_mesh_frame_3 m = VM::internal::polygon_relaxation_mesh_3(P, 6);
   // A functional depending on f, the gradient and the position.
   auto G = [](double f, double fx, double fy, double x, double y) {
@@ -155,13 +156,13 @@ TEST_CASE("mesh_energy_3: the gradient is the derivative of the energy", "[varia
   }
   // Energy of the plane f = 0.2 + 0.3 x + 0.4 y for the area: sqrt(1 + 0.09 + 0.16) |Ω| (exact on any mesh).
   for(std::size_t k = 0; k < m.size(); ++k) f[k] = 0.2 + 0.3 * m.nodes[k][0] + 0.4 * m.nodes[k][1];
-  CHECK(rel(VM::internal::mesh_energy_3(m, VM::Area_functional_3(), f, nullptr), std::sqrt(1.25) * 0.75) <= 1e-13);
+  CHECK(relative_difference(VM::internal::mesh_energy_3(m, VM::Area_functional_3(), f, nullptr), std::sqrt(1.25) * 0.75) <= 1e-13);
 }
 
 TEST_CASE("relax_surface_3: linear boundary data relaxes to the plane on L, triangle, hexagon and U domains",
           "[variational][surface][polygon][relaxation]")
 {
-  const std::vector<std::pair<Polygon, double>> domains = {{L_shape, 0.75}, {triangle, 0.5}, {hexagon, 0.75},
+  const std::vector<std::pair<Polygon, double>> domains = {{L_shaped_domain, 0.75}, {triangle, 0.5}, {hexagon, 0.75},
                                                            {u_shape, 0.625}};
   for(const auto& d : domains) {
     VM::Surface_problem_3 P;
@@ -177,7 +178,7 @@ TEST_CASE("relax_surface_3: linear boundary data relaxes to the plane on L, tria
       P, VM::Area_functional_3(), [](double x, double y) { return 0.5 + 0.3 * std::sin(7 * x * y); }, o);
     check_relaxed_mesh(P, r);
     CHECK(r.n == 20);
-    CHECK(rel(r.energy, exact) <= 1e-9);
+    CHECK(relative_difference(r.energy, exact) <= 1e-9);
     CHECK(r.level_start_energies.front() > exact * (1 + 1e-3)); // the start was not the plane
     for(std::size_t k = 0; k < r.nodes.size(); ++k)
       CHECK(std::abs(r.heights[k] - (0.25 + 0.5 * r.nodes[k][0] + 0.25 * r.nodes[k][1])) <= 1e-4);
@@ -185,7 +186,7 @@ TEST_CASE("relax_surface_3: linear boundary data relaxes to the plane on L, tria
     const VM::Relaxed_surface_3 s = VM::relax_surface_3(P, VM::Area_functional_3(), discrete_optimum(P, 40, 1));
     check_relaxed_mesh(P, s);
     CHECK(s.n == 80);
-    CHECK(rel(s.energy, exact) <= 1e-9);
+    CHECK(relative_difference(s.energy, exact) <= 1e-9);
     for(std::size_t k = 0; k < s.nodes.size(); ++k)
       CHECK(std::abs(s.heights[k] - (0.25 + 0.5 * s.nodes[k][0] + 0.25 * s.nodes[k][1])) <= 1e-9);
   }
@@ -233,7 +234,7 @@ TEST_CASE("relax_surface_3: a polygon equal to the box agrees with the rectangle
   CHECK(a.triangles.empty());
   check_relaxed_mesh(Q, b);
   INFO("grid " << a.energy << ", mesh " << b.energy);
-  CHECK(rel(a.energy, b.energy) <= 2e-5);
+  CHECK(relative_difference(a.energy, b.energy) <= 2e-5);
 }
 
 TEST_CASE("relax_surface_3: G is never evaluated outside a polygon; bad input throws",
@@ -242,7 +243,7 @@ TEST_CASE("relax_surface_3: G is never evaluated outside a polygon; bad input th
   VM::Surface_problem_3 P;
   P.boundary_segments_per_side = 4;
   P.lower_boundary = [](double x, double y) { return 0.4 + 0.2 * x * y; };
-  P.set_domain_polygon(L_shape);
+  P.set_domain_polygon(L_shaped_domain);
   // Negative over the L's missing quarter: relax_surface_3 would throw if it evaluated G there.
   auto G = [](double f, double fx, double fy, double x, double y) {
     return x > 0.5 + 1e-12 && y > 0.5 + 1e-12 ? -1.0 : VM::Area_functional_3()(f, fx, fy, x, y);
@@ -259,7 +260,7 @@ TEST_CASE("relax_surface_3: G is never evaluated outside a polygon; bad input th
   const VM::Relaxed_surface_3 band =
     VM::relax_surface_3(B, VM::Area_functional_3(), [](double x, double y) { return 0.2 + 0.6 * x * y; }, o);
   check_relaxed_mesh(B, band);
-  CHECK(rel(band.energy, 0.75) <= 1e-9);
+  CHECK(relative_difference(band.energy, 0.75) <= 1e-9);
   // Negative G inside Ω, and bad options, throw.
   CHECK_THROWS_AS(VM::relax_surface_3(P, [](double, double, double, double, double) { return -1.0; },
                                       [](double, double) { return 0.5; }, o),
@@ -291,18 +292,18 @@ TEST_CASE("refine_surface_3 on polygons: the plane on linear data; no worse than
     VM::Surface_problem_3 P;
     P.boundary_segments_per_side = 4;
     P.lower_boundary = [](double x, double y) { return 0.25 + 0.5 * x + 0.25 * y; };
-    for(const Polygon& poly : {L_shape, u_shape}) {
+    for(const Polygon& poly : {L_shaped_domain, u_shape}) {
       P.set_domain_polygon(poly);
       const VM::Surface_refinement_result_3 R = VM::refine_surface_3(P, VM::Area_functional_3(), 40, 2, o, 0.02);
       REQUIRE(R.surface.is_feasible);
-      CHECK(rel(R.surface.energy, std::sqrt(1.3125) * P.domain_area()) <= 1e-9);
+      CHECK(relative_difference(R.surface.energy, std::sqrt(1.3125) * P.domain_area()) <= 1e-9);
       for(const auto& p : R.surface.points) CHECK(std::abs(p[2] - (0.25 + 0.5 * p[0] + 0.25 * p[1])) <= 1e-9);
     }
   }
   struct Case { Polygon polygon; double (*g)(double, double); };
   const std::vector<Case> cases = {
     {hexagon, hexagon_saddle},
-    {L_shape, [](double x, double y) { return 0.5 + 1.2 * (x - 0.5) * (y - 0.5); }}};
+    {L_shaped_domain, [](double x, double y) { return 0.5 + 1.2 * (x - 0.5) * (y - 0.5); }}};
   for(const Case& c : cases)
     for(double margin : {0.0, 0.05}) {
       VM::Surface_problem_3 P;
@@ -314,8 +315,8 @@ TEST_CASE("refine_surface_3 on polygons: the plane on linear data; no worse than
       REQUIRE(R.surface.is_feasible);
       const double best_run = *std::min_element(R.run_energies.begin(), R.run_energies.end());
       CHECK(R.surface.energy <= best_run * (1 + 1e-9));
-      CHECK(rel(R.surface.energy, R.surface.solver_value) <= 1e-9);
-      CHECK(rel(R.surface.projected_area, P.domain_area()) <= 1e-9);
+      CHECK(relative_difference(R.surface.energy, R.surface.solver_value) <= 1e-9);
+      CHECK(relative_difference(R.surface.projected_area, P.domain_area()) <= 1e-9);
       for(const auto& p : R.surface.points) CHECK(in_polygon(c.polygon, p[0], p[1]));
       CHECK(R.cells_below > 0);
       CHECK(R.cells_above > 0);

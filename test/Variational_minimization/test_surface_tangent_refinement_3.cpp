@@ -12,6 +12,7 @@
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
 #include <MDCS_test/polygon_geometry.h>
+#include <MDCS_test/test_numbers.h>
 
 #include <cmath>
 #include <limits>
@@ -22,7 +23,7 @@ namespace VM = CGAL::Variational_minimization;
 
 namespace {
 
-double rel(double a, double b) { return a == b ? 0 : std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
+using MDCS_test::relative_difference;
 
 VM::Surface_plane_options_3 slope_limited(std::uint64_t seed)
 {
@@ -39,8 +40,8 @@ void check_valid(const VM::Surface_problem_3& P, const VM::Tangent_refinement_re
   REQUIRE(r.surface.is_feasible);
   CHECK(r.planes.size() == n);
   CHECK(r.round_energies.size() == r.round_cells.size());
-  CHECK(rel(r.surface.energy, r.surface.solver_value) <= 1e-9);
-  CHECK(rel(r.surface.projected_area, P.domain_area()) <= 1e-9);
+  CHECK(relative_difference(r.surface.energy, r.surface.solver_value) <= 1e-9);
+  CHECK(relative_difference(r.surface.projected_area, P.domain_area()) <= 1e-9);
   CHECK(r.surface.energy == r.round_energies[std::size_t(r.best_round)]);
   for(double e : r.round_energies) CHECK(r.surface.energy <= e);
   for(const auto& p : r.surface.points) {
@@ -106,8 +107,8 @@ TEST_CASE("tangent refinement: linear boundary data gives the plane in every rou
   // The boundary heights are rounded to the lattice (about 3e-6 here), hence the plane's area only to 1e-5; the
   // plane (the boundary cone) is in every round's arrangement, so every round finds the same energy.
   for(double e : r.round_energies) {
-    CHECK(rel(e, exact) <= 1e-5);
-    CHECK(rel(e, r.round_energies[0]) <= 1e-9);
+    CHECK(relative_difference(e, exact) <= 1e-5);
+    CHECK(relative_difference(e, r.round_energies[0]) <= 1e-9);
   }
 }
 

@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <MDCS_test/surface_problems.h>
+
 #include <CGAL/Variational_minimization/Curve_problem_2.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/curve_edge_weights_2.h>
@@ -22,6 +24,7 @@
 #include <CGAL/Variational_minimization/surface_planes_3.h>
 
 #include <MDCS_test/curve_problems.h>
+#include <MDCS_test/test_numbers.h>
 
 #include <chrono>
 #include <cmath>
@@ -33,15 +36,10 @@ namespace VM = CGAL::Variational_minimization;
 
 namespace {
 
-const double inf = std::numeric_limits<double>::infinity(), qnan = std::numeric_limits<double>::quiet_NaN();
+using MDCS_test::inf;
+const double qnan = std::numeric_limits<double>::quiet_NaN();
 
-VM::Surface_problem_3 saddle_problem()
-{
-  VM::Surface_problem_3 P;
-  P.boundary_segments_per_side = 4;
-  P.lower_boundary = [](double x, double y) { return 0.5 + (x - 0.5) * (y - 0.5); };
-  return P;
-}
+VM::Surface_problem_3 fine_saddle_problem() { return MDCS_test::saddle_problem(4); }
 
 // A surface functional that is finite everywhere but so large that its integral over 25 units of area overflows.
 struct Huge_functional_3
@@ -58,7 +56,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0)
 
 TEST_CASE("variational checks: max_slope must be finite, positive and representable in the lattice", "[variational][checks]")
 {
-  const VM::Surface_problem_3 P = saddle_problem();
+  const VM::Surface_problem_3 P = fine_saddle_problem();
   CHECK(VM::surface_max_slope_3(P) == Approx(std::ldexp(1.0, 20)));   // unit box, unit range
   for(VM::Plane_distribution_3 d : {VM::Plane_distribution_3::slope_limited, VM::Plane_distribution_3::isotropic}) {
     for(double bad : {inf, qnan, 0.0, -1.0, 1e308, 2.0 * std::ldexp(1.0, 20)}) {
@@ -104,7 +102,7 @@ TEST_CASE("variational checks: max_slope must be finite, positive and representa
 
 TEST_CASE("variational checks: counts that would size huge allocations are refused at once", "[variational][checks]")
 {
-  const VM::Surface_problem_3 P = saddle_problem();
+  const VM::Surface_problem_3 P = fine_saddle_problem();
   const auto t0 = std::chrono::steady_clock::now();
   // `surface --planes 1e12` grew without bound
   CHECK_THROWS_WITH(VM::surface_planes_3(P, std::size_t(1e12)), Catch::Contains("planes"));
@@ -127,13 +125,13 @@ TEST_CASE("variational checks: counts that would size huge allocations are refus
 
 TEST_CASE("variational checks: ranges whose width overflows are refused", "[variational][checks]")
 {
-  VM::Surface_problem_3 P = saddle_problem();
+  VM::Surface_problem_3 P = fine_saddle_problem();
   P.zmin = -1e308;
   P.zmax = 1e308;   // finite ends, infinite range: every height in the lattice would be NaN
   P.lower_boundary = [](double, double) { return 0.0; };
   CHECK_THROWS_WITH(P.validate(), Catch::Contains("overflow"));
   CHECK_THROWS_AS(VM::surface_planes_3(P, 40), std::invalid_argument);
-  VM::Surface_problem_3 wide = saddle_problem();
+  VM::Surface_problem_3 wide = fine_saddle_problem();
   wide.domain = CGAL::Bbox_2(-1e308, 0, 1e308, 1);
   CHECK_THROWS_AS(wide.validate(), std::invalid_argument);
 }
@@ -141,7 +139,7 @@ TEST_CASE("variational checks: ranges whose width overflows are refused", "[vari
 TEST_CASE("variational checks: finite functional values that add up to infinity are never a feasible result", "[variational][checks]")
 {
   // surfaces on a 5 x 5 domain: 1e307 per unit area is finite at every point; facets or their sum overflow
-  VM::Surface_problem_3 P = saddle_problem();
+  VM::Surface_problem_3 P = fine_saddle_problem();
   P.domain = CGAL::Bbox_2(0, 0, 5, 5);
   P.lower_boundary = [](double x, double y) { return 0.5 + 0.02 * (x - 2.5) * (y - 2.5); };
   const VM::Plane_arrangement_3 A = VM::build_surface_arrangement_3(P, VM::surface_planes_3(P, 40));
@@ -159,7 +157,7 @@ TEST_CASE("variational checks: finite functional values that add up to infinity 
   ro.grids = {4};
   CHECK_THROWS_AS(VM::relax_surface_3(P, Huge_functional_3(), [](double, double) { return 0.5; }, ro), std::invalid_argument);
   // relaxation options that size arrays or never stop (on the unit square)
-  const VM::Surface_problem_3 U = saddle_problem();
+  const VM::Surface_problem_3 U = fine_saddle_problem();
   ro.grids = {4};
   ro.memory = 0;
   CHECK_THROWS_AS(VM::relax_surface_3(U, VM::Area_functional_3(), [](double, double) { return 0.5; }, ro), std::invalid_argument);

@@ -14,6 +14,14 @@ Arguments are split like a shell would (shlex), without a shell. Checks, separat
     nostderr~TEXT    stderr does not contain TEXT      contains:PATH~TEXT   the file PATH contains TEXT
     fsize:BYTES      run with a file size limit (RLIMIT_FSIZE): writes beyond BYTES fail like a full disk
     json:PATH:KEY=V  the JSON file PATH has V (compared as text) at the dotted KEY, e.g. results.reachable_vertices
+    also:ARGUMENTS   before the other checks, run mdcs again with these arguments in the same scratch folder (it
+                     must exit 0 without a sanitizer report): a second run whose outputs serve as an oracle
+    plydist:PATH:V=D~TOL     vertex V of the PLY file PATH (the `distance` property, as in distances.ply) has
+                             the distance D within TOL (absolute); D = -1 means unreachable
+    plydist:PATH=PATH2~TOL   every vertex of PATH has, within TOL, the distance of the same vertex of PATH2 (which
+                             may have more vertices: e.g. a double cover that numbers its first sheet like PATH)
+    npyrow:NPY:ROW=PLY~TOL   row ROW of the float64 .npy matrix NPY equals, within TOL, the distances of the PLY
+                             file PLY (inf in the matrix = -1 in the PLY: unreachable)
 
 usage: run_cli_cases.py MDCS_EXECUTABLE CASE_FILE... [--cgal DIR] [--memory-mib N] [--filter TEXT] [--list]
 The memory limit (address space, default 4096 MiB) is not applied to sanitizer builds, whose shadow memory
@@ -52,6 +60,98 @@ def parse_cases(path):
             cases.append(dict(name=name, code=int(code), seconds=float(seconds), args=args, checks=checks,
                               where=f"{os.path.basename(path)}:{number}"))
     return cases
+
+
+def read_ply_distances(path):
+    """The `distance` property of every vertex of an ASCII PLY file (distances.ply)."""
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().splitlines()
+    vertices, properties, column, body = 0, [], None, 0
+    element = None
+    for i, line in enumerate(lines):
+        words = line.split()
+        if words[:1] == ["element"]:
+            element = words[1]
+            if element == "vertex":
+                vertices = int(words[2])
+        elif words[:1] == ["property"] and element == "vertex":
+            properties.append(words[-1])
+        elif words[:1] == ["end_header"]:
+            body = i + 1
+            break
+    column = properties.index("distance")
+    return [float(lines[body + k].split()[column]) for k in range(vertices)]
+
+
+def read_npy_row(path, row):
+    """Row `row` of a 2-D little-endian float64 .npy file in C order (numpy.save's format), without NumPy."""
+    import ast
+    import struct
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:6] != b"\x93NUMPY":
+        raise ValueError("not a .npy file")
+    major = data[6]
+    length, start = (struct.unpack("<H", data[8:10])[0], 10) if major == 1 else (struct.unpack("<I", data[8:12])[0], 12)
+    header = ast.literal_eval(data[start:start + length].decode("latin1"))
+    if header["descr"] != "<f8" or header["fortran_order"] or len(header["shape"]) != 2:
+        raise ValueError(f"unsupported .npy header {header}")
+    rows, columns = header["shape"]
+    if not 0 <= row < rows:
+        raise IndexError(f"row {row} of {rows}")
+    offset = start + length + 8 * columns * row
+    return list(struct.unpack(f"<{columns}d", data[offset:offset + 8 * columns]))
+
+
+def check_npy_row(kind, value, tmp):
+    """The npyrow check (see the module's doc); returns a problem or None."""
+    spec = kind[len("npyrow:"):]
+    try:
+        npy_path, _, rest = spec.partition(":")
+        row, _, ply_path = rest.partition("=")
+        got = read_npy_row(os.path.join(tmp, npy_path), int(row))
+        want = [d if d >= 0 else float("inf") for d in read_ply_distances(os.path.join(tmp, ply_path))]
+        if len(got) != len(want):
+            return f"row {row} of {npy_path} has {len(got)} columns, {ply_path} {len(want)} vertices"
+        tol = float(value)
+        for k, (a, b) in enumerate(zip(got, want)):
+            if not (a == b or abs(a - b) <= tol):
+                return f"{npy_path} ({row}, {k}) is {a!r}, {ply_path} has {b!r} (tolerance {tol:g})"
+        return None
+    except (OSError, ValueError, IndexError, KeyError, SyntaxError) as e:
+        return f"cannot check {spec} ({e})"
+
+
+def check_ply_distances(kind, value, tmp):
+    """The plydist checks (see the module's doc); returns a problem or None."""
+    spec = kind[len("plydist:"):]
+    tol = float(value)
+    try:
+        def is_number(text):
+            try:
+                float(text)
+                return True
+            except ValueError:
+                return False
+        if not is_number(spec.rpartition("=")[2]):
+            a_path, _, b_path = spec.partition("=")
+            a = read_ply_distances(os.path.join(tmp, a_path))
+            b = read_ply_distances(os.path.join(tmp, b_path))
+            if len(b) < len(a):
+                return f"{b_path} has {len(b)} vertices, fewer than the {len(a)} of {a_path}"
+            worst = max(range(len(a)), key=lambda k: abs(a[k] - b[k]), default=None)
+            if worst is not None and abs(a[worst] - b[worst]) > tol:
+                return f"vertex {worst}: {a[worst]!r} in {a_path}, {b[worst]!r} in {b_path} (tolerance {tol:g})"
+            return None
+        path, _, assignment = spec.rpartition(":")
+        vertex, _, wanted = assignment.partition("=")
+        d = read_ply_distances(os.path.join(tmp, path))
+        got, want = d[int(vertex)], float(wanted)
+        if abs(got - want) > tol:
+            return f"{path}: vertex {vertex} has distance {got!r}, expected {want!r} (tolerance {tol:g})"
+        return None
+    except (OSError, ValueError, IndexError) as e:
+        return f"cannot check {spec} ({e})"
 
 
 def substitute(text, tmp, cgal):
@@ -107,6 +207,21 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
         if proc.returncode != case["code"] and proc.returncode >= 0:
             problems.append(f"exit code {proc.returncode}, expected {case['code']}")
         for check in case["checks"]:
+            if not check.startswith("also:"):
+                continue
+            also = [exe] + shlex.split(substitute(check[len("also:"):], tmp, cgal))
+            try:
+                second = subprocess.run(also, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp, env=env,
+                                        preexec_fn=limits, timeout=limit)
+            except subprocess.TimeoutExpired:
+                problems.append(f"'{check}': no exit within {limit:g} s")
+                continue
+            second_err = second.stderr.decode("utf-8", "replace")
+            if second.returncode != 0 or any(mark in second_err for mark in SANITIZER_MARKS):
+                problems.append(f"'{check}' exited with {second.returncode}: {second_err.strip()[-300:]}")
+        for check in case["checks"]:
+            if check.startswith("also:"):
+                continue
             kind, _, value = check.partition("~") if "~" in check else check.partition(":")
             value = substitute(value, tmp, cgal)
             if kind == "stderr" and value not in err:
@@ -119,6 +234,14 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
                 problems.append(f"file '{value}' should not exist")
             elif kind == "nostderr" and value in err:
                 problems.append(f"stderr has '{value}'")
+            elif kind.startswith("npyrow:"):
+                problem = check_npy_row(kind, value, tmp)
+                if problem:
+                    problems.append(problem)
+            elif kind.startswith("plydist:"):
+                problem = check_ply_distances(kind, value, tmp)
+                if problem:
+                    problems.append(problem)
             elif kind.startswith("contains:"):
                 path = substitute(kind[len("contains:"):], tmp, cgal)
                 try:
@@ -140,7 +263,7 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
                         problems.append(f"{path}: {key} is {got}, expected {wanted}")
                 except (OSError, ValueError, KeyError, IndexError, TypeError) as e:
                     problems.append(f"{path}: cannot read {key} ({e})")
-            elif kind not in ("stderr", "stdout", "file", "nofile", "fsize", "nostderr") and not kind.startswith("contains:"):
+            elif kind not in ("stderr", "stdout", "file", "nofile", "fsize", "nostderr") and not kind.startswith(("contains:", "plydist:", "npyrow:")):
                 problems.append(f"unknown check '{check}'")
         if problems:
             tail = "\n      ".join(err.strip().splitlines()[-6:])

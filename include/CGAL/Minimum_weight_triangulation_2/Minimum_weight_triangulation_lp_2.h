@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The triangle-based LP for the minimum weight triangulation, stage by stage: candidate edges (diamond test),
-// empty triangles, LP, solve, certificate, branch and bound.
+// empty triangles, LP, solve, certificate, branch and bound. The weights with rigorous bounds and the certificates
+// of an LP optimum are in internal/Lp_certificate_2.h.
 
 #ifndef CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MINIMUM_WEIGHT_TRIANGULATION_LP_2_H
 #define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MINIMUM_WEIGHT_TRIANGULATION_LP_2_H
@@ -13,12 +14,11 @@
 #include <CGAL/Minimum_weight_triangulation_2/internal/Candidate_edges_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Coordinate_range_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Empty_triangles_2.h>
-#include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Face_dp_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Lmt_skeleton_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Lp_certificate_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Parallel_stage_2.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Validation_2.h>
-#include <CGAL/Interval_nt.h>
 #include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/tags.h>
@@ -162,7 +162,7 @@ public:
     }
     r.triangles = std::move(tri);
     r.weight = checked_weight(weight_of(r.triangles, &upper_weight_));
-    r.lower_bound = weight_lower_bound(r.triangles);
+    r.lower_bound = weights().weight_lower_bound(r.triangles);
     r.lp_objective = r.weight;
     r.lp_integral = true;
     r.status = Mwt_status::certified_optimal;
@@ -318,7 +318,7 @@ public:
     const double fixed_part = fixed_weight_lower_bound();   // faces solved by the dynamic program
     r.lp_objective = checked_weight(sol.objective * scale_ + fixed_part);   // finite objective, overflow by the scale
     r.lp_exact = sol.exact;
-    r.lower_bound = dual_lower_bound(sol.dual) + fixed_part;
+    r.lower_bound = certificate().dual_lower_bound(sol.dual) + fixed_part;
     std::size_t fractional = 0;
     std::vector<std::array<int, 3>> chosen(fixed_);
     for(std::size_t j = 0; j < sol.primal.size(); ++j) {
@@ -337,9 +337,10 @@ public:
         r.triangles = chosen;
         r.weight = checked_weight(weight_of(chosen, &upper_weight_));
         const bool ok = r.lower_bound >= upper_weight_ - options_.certificate_tolerance * std::abs(upper_weight_);
-        r.certificate_exact = fixed_.empty() && reduced_costs_separate(sol.dual, sol.primal);
+        r.certificate_exact = fixed_.empty() && certificate().reduced_costs_separate(sol.dual, sol.primal);
         if(!r.certificate_exact && fixed_.empty() && options_.exact_support_certificate) {
-          r.certificate_support = support_certificate(sol.dual, sol.primal, chosen);
+          r.certificate_support = certificate().support_certificate(sol.dual, sol.primal, chosen, *index_,
+                                                                    par_.timed(&weight_loop_time_));
           r.certificate_exact = r.certificate_support > 0;
         }
         r.status = (ok || r.certificate_exact) ? Mwt_status::certified_optimal : Mwt_status::optimal_uncertified;
@@ -397,43 +398,7 @@ public:
   /// The edges are summed in increasing order (the same sum for every thread count).
   double weight_of(const std::vector<std::array<int, 3>>& tri, double* upper = nullptr) const
   {
-    if(options_.triangle_weight) {
-      // The user's weights are taken as exact doubles; their interval sum bounds the rounding of the double sum
-      // whatever the number of triangles (a fixed relative slack would not).
-      double s = 0;
-      Blocked_interval_sum I;
-      for(const auto& t : tri) {
-        const double w = user_weight(t[0], t[1], t[2]);
-        s += w;
-        I.add(Interval(w));
-      }
-      if(upper) *upper = I.value().sup();
-      return s;
-    }
-    // the edges (a < b) as rows per a, sorted and unique: in increasing order when read row by row
-    for(const auto& t : tri)
-      for(int v : t)
-        if(v < 0 || std::size_t(v) >= pts_.size()) throw std::invalid_argument("weight_of: vertex index out of range");
-    const internal::Parallel_stage par = par_.timed(&weight_loop_time_);
-    std::vector<std::size_t> start;
-    internal::Uninit_vector<int> other;
-    internal::build_sorted_rows(pts_.size(), tri.size(), [&](std::size_t k, auto&& add) {
-      for(int i = 0; i < 3; ++i) add(std::min(tri[k][i], tri[k][(i + 1) % 3]), std::max(tri[k][i], tri[k][(i + 1) % 3]));
-    }, true, start, other, par);
-    internal::Uninit_vector<int> first(other.size());   // the row of every entry
-    par.for_blocks(pts_.size(), 4096, [&](std::size_t a0, std::size_t a1, std::size_t) {
-      for(std::size_t a = a0; a < a1; ++a)
-        std::fill(first.begin() + std::ptrdiff_t(start[a]), first.begin() + std::ptrdiff_t(start[a + 1]), int(a));
-    });
-    internal::Uninit_vector<double> len(other.size());
-    const Interval I = blocked_interval_sum(other.size(), [&](std::size_t k) {
-      len[k] = length(first[k], other[k]);
-      return interval_length(first[k], other[k]);
-    }, par);
-    double s = 0;
-    for(double l : len) s += l;   // in order: the sum of the sequential loop
-    if(upper) *upper = I.sup();
-    return s;
+    return weights().weight(tri, par_.timed(&weight_loop_time_), upper);
   }
 
 private:
@@ -448,23 +413,17 @@ private:
   typedef std::chrono::steady_clock Stage_clock;
   static double since(Stage_clock::time_point t0) { return std::chrono::duration<double>(Stage_clock::now() - t0).count(); }
 #endif
-  typedef CGAL::Interval_nt<true> Interval;
+  typedef internal::Triangulation_weights_2<internal::Indexed_points_2<Kernel>> Weights;
 
-  // Interval sum of many terms, in blocks of 4096: the outward rounding of an addition grows with the partial
-  // sum, so one running sum of the 3 * 10^7 edge lengths of a triangulation of 10^7 points widens by about
-  // up to n u |sum| (measured: 1.2e-9 relative, more than the certificate tolerance 1e-9); with blocks by
-  // about (4096 + n / 4096) u |sum| (about 1e-12 relative).
-  struct Blocked_interval_sum
+  // The lengths and weights of the metric over the points (internal/Lp_certificate_2.h).
+  Weights weights() const { return Weights(pts_, options_); }
+
+  // The certificates of an LP optimum, over the current stages (internal/Lp_certificate_2.h).
+  internal::Lp_certificate_2<Kernel> certificate() const
   {
-    Interval total = Interval(0), block = Interval(0);
-    int count = 0;
-    void add(const Interval& x)
-    {
-      block += x;
-      if(++count == 4096) { total += block; block = Interval(0); count = 0; }
-    }
-    Interval value() const { return total + block; }
-  };
+    return internal::Lp_certificate_2<Kernel>(pts_, options_, edges_, triangles_, lp_, row_one_, row_is_hull_, is_hull_,
+                                              scale_);
+  }
 
   static std::string seconds(double t)
   {
@@ -482,20 +441,6 @@ private:
       throw std::invalid_argument("minimum_weight_triangulation_2: the weight of the triangulation is not finite (the "
                                   "triangle weights add up beyond the double range); scale the weights down");
     return w;
-  }
-
-  // Rigorous lower bound of the weight of a triangulation (interval sum of its edge lengths).
-  double weight_lower_bound(const std::vector<std::array<int, 3>>& tri) const
-  {
-    std::vector<std::pair<int, int>> e;
-    e.reserve(3 * tri.size());
-    for(const auto& t : tri)
-      for(int i = 0; i < 3; ++i) e.emplace_back(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
-    std::sort(e.begin(), e.end());
-    e.erase(std::unique(e.begin(), e.end()), e.end());
-    Blocked_interval_sum I;
-    for(const auto& ed : e) I.add(interval_length(ed.first, ed.second));
-    return I.value().inf();
   }
 
   // The stage "certificate" (validation, weights, bounds; 45 s at 10^7 points) for the progress callback.
@@ -578,24 +523,6 @@ private:
     return out;
   }
 
-  // The value of a Blocked_interval_sum of term(0), ..., term(count - 1), its blocks of 4096 terms summed in
-  // parallel: the same additions in the same order, so the same interval for every thread count. term(k) may
-  // write per-term results (each k is called once).
-  template <class Term>
-  Interval blocked_interval_sum(std::size_t count, Term term, const internal::Parallel_stage& par) const
-  {
-    const std::size_t B = 4096, full = count / B;
-    std::vector<Interval> part(full + 1, Interval(0));
-    par.for_blocks(count, B, [&](std::size_t k0, std::size_t k1, std::size_t b) {
-      Interval sum(0);
-      for(std::size_t k = k0; k < k1; ++k) sum += term(k);
-      part[b] = sum;
-    });
-    Interval total(0);
-    for(std::size_t b = 0; b < full; ++b) total += part[b];
-    return total + (count % B != 0 ? part[full] : Interval(0));
-  }
-
   // The exact validation (empty: valid, or not asked for), in parallel.
   std::string validated(const std::vector<std::array<int, 3>>& tri)
   {
@@ -613,8 +540,8 @@ private:
       for(std::size_t e = e0; e < e1; ++e)
         if(fixed_edge_[e] && (row_of_edge_.empty() || row_of_edge_[e] < 0)) out.push_back(int(e));
     });
-    return blocked_interval_sum(terms.size(), [&](std::size_t k) {
-      return interval_length(edges_[std::size_t(terms[k])].first, edges_[std::size_t(terms[k])].second);
+    return internal::blocked_interval_sum(terms.size(), [&](std::size_t k) {
+      return weights().interval_length(edges_[std::size_t(terms[k])].first, edges_[std::size_t(terms[k])].second);
     }, par).inf();
   }
 
@@ -641,158 +568,13 @@ private:
     return finish(r);
   }
 
-  double length(int a, int b) const
-  {
-    const double dx = pts_.x(b) - pts_.x(a), dy = pts_.y(b) - pts_.y(a);
-    switch(options_.metric) {
-      case Edge_metric::L1: return std::abs(dx) + std::abs(dy);
-      case Edge_metric::Linf: return std::max(std::abs(dx), std::abs(dy));
-      default: return std::sqrt(dx * dx + dy * dy);
-    }
-  }
-
-  Interval interval_length(int a, int b) const
-  {
-    const Interval dx = Interval(pts_.x(b)) - Interval(pts_.x(a)), dy = Interval(pts_.y(b)) - Interval(pts_.y(a));
-    switch(options_.metric) {
-      case Edge_metric::L1: return CGAL::abs(dx) + CGAL::abs(dy);
-      case Edge_metric::Linf: {
-        const Interval ax = CGAL::abs(dx), ay = CGAL::abs(dy);
-        return Interval((std::max)(ax.inf(), ay.inf()), (std::max)(ax.sup(), ay.sup()));
-      }
-      default: return CGAL::sqrt(CGAL::square(dx) + CGAL::square(dy));
-    }
-  }
-
-  double user_weight(int a, int b, int c) const
-  {
-    const double w = options_.triangle_weight(pts_.x(a), pts_.y(a), pts_.x(b), pts_.y(b), pts_.x(c), pts_.y(c));
-    if(!(w > 0) || !std::isfinite(w))
-      throw std::invalid_argument("minimum_weight_triangulation_2: the user triangle weight must be finite and > 0");
-    return w;
-  }
-
   double triangle_cost(const internal::Lp_triangle& t) const
   {
-    if(options_.triangle_weight) return user_weight(t.v[0], t.v[1], t.v[2]);
+    if(options_.triangle_weight) return weights().user_weight(t.v[0], t.v[1], t.v[2]);
     double c = 0;
     for(int i = 0; i < 3; ++i)
-      c += (row_one_[t.edge[i]] ? 1.0 : 0.5) * length(edges_[t.edge[i]].first, edges_[t.edge[i]].second);
+      c += (row_one_[t.edge[i]] ? 1.0 : 0.5) * weights().length(edges_[t.edge[i]].first, edges_[t.edge[i]].second);
     return c;
-  }
-
-  // Rigorous lower bound (input units) of every triangulation over the candidate edges from any dual
-  // vector y: for feasible x (0 <= x_t <= 1), c.x = b.y + d.x >= b.y + sum_t min(0, d_t), d = c - A^T y.
-  // Interval enclosure of the reduced cost of column j for the duals y (costs are sums of square roots).
-  Interval reduced_cost(std::size_t j, const std::vector<double>& y) const
-  {
-    const auto& t = triangles_[j];
-    Interval c(0);
-    if(options_.triangle_weight) {
-      const double w = user_weight(t.v[0], t.v[1], t.v[2]) / scale_;
-      c = Interval(w * (1 - 1e-12), w * (1 + 1e-12));
-    } else {
-      for(int i = 0; i < 3; ++i)
-        c += (row_one_[t.edge[i]] ? Interval(1) : Interval(0.5)) * interval_length(t.v[i], t.v[(i + 1) % 3]);
-      c /= Interval(scale_);
-    }
-    for(int k = lp_.column_start[j]; k < lp_.column_start[j + 1]; ++k)
-      c -= Interval(lp_.value[k]) * Interval(y[lp_.row_index[k]]);
-    return c;
-  }
-
-  // The exact certificate: every triangulation T of the LP region satisfies the equality rows, so
-  // w(T) = y.b + sum over T of the reduced costs, and T and the optimum T* differ in equally many triangles
-  // (all triangulations of a region have the same count). If the smallest reduced cost outside T* exceeds the
-  // largest inside it, w(T) > w(T*) for every T != T*: T* is the unique minimum, with no tolerance.
-  bool reduced_costs_separate(const std::vector<double>& y, const std::vector<double>& x) const
-  {
-    if(y.size() != lp_.number_of_rows || x.size() != triangles_.size() || options_.triangle_weight) return false;
-    for(double v : y)
-      if(!std::isfinite(v)) return false;
-    double inside_max = -HUGE_VAL, outside_min = HUGE_VAL;
-    for(std::size_t j = 0; j < triangles_.size(); ++j) {
-      const Interval d = reduced_cost(j, y);
-      if(x[j] > 0.5) inside_max = std::max(inside_max, d.sup());
-      else outside_min = std::min(outside_min, d.inf());
-    }
-    return outside_min > inside_max;
-  }
-
-  // The exact certificate of a dual degenerate optimum T* (chosen = its triangles). With the reduced costs d
-  // (intervals) of the duals y: eps = max over T* of d.sup, eps2 = max(0, -min over all of d.inf), N = |T*|,
-  // tau = 2 N (eps + eps2) (at least 1e-12); the support Z = {t : d_t.inf <= tau} holds T*. A triangulation T
-  // with k >= 1 triangles outside Z (reduced cost > tau each) and r = |T \ T*| <= N satisfies
-  // w(T) - w(T*) = sum_{T \ T*} d - sum_{T* \ T} d >= k tau - r eps2 - r eps > 0: strictly heavier. The
-  // If T* is not a minimum, an MWT M is strictly lighter, so M uses triangles of Z only. M is locally minimal,
-  // so the LMT-skeleton computed on the triangles of Z keeps M's edges possible, and its certain edges (possible
-  // edges crossed by no other) are in M (a triangulation is a maximal non-crossing set). They cut the hull into
-  // faces, solved over the triangles of Z by the exact face programs (Face_dp_2): the programs' total is at
-  // most w(M) < w(T*). So if every face is solved and the total equals w(T*) exactly (compare_length_sums), T*
-  // is a minimum, with no tolerance. Returns |Z| on success, 0 otherwise.
-  std::size_t support_certificate(const std::vector<double>& y, const std::vector<double>& x,
-                                  const std::vector<std::array<int, 3>>& chosen) const
-  {
-    if(y.size() != lp_.number_of_rows || x.size() != triangles_.size() || options_.triangle_weight ||
-       options_.metric != Edge_metric::L2)
-      return 0;
-    for(double v : y)
-      if(!std::isfinite(v)) return 0;
-    std::vector<double> lo(triangles_.size());
-    double eps = 0, eps2 = 0;
-    std::size_t N = 0;
-    for(std::size_t j = 0; j < triangles_.size(); ++j) {
-      const Interval d = reduced_cost(j, y);
-      lo[j] = d.inf();
-      eps2 = std::max(eps2, -d.inf());
-      if(x[j] > 0.5) { eps = std::max(eps, d.sup()); ++N; }
-    }
-    const double tau = std::max(1e-12, 2 * double(N) * (eps + eps2) * (1 + 1e-9));
-    if(!(tau < 1e-3)) return 0;   // duals too inaccurate for a useful support
-    std::vector<internal::Lp_triangle> Z;
-    for(std::size_t j = 0; j < triangles_.size(); ++j)
-      if(x[j] > 0.5 || lo[j] <= tau) Z.push_back(triangles_[j]);
-    // the LMT-skeleton on the triangles of Z: an MWT inside Z is locally minimal with triangles of Z
-    const internal::Triangle_set Zs(edges_, Z);
-    const internal::Parallel_stage par = par_.timed(&weight_loop_time_);
-    const internal::Edge_triangles by_edge(Zs, edges_.size(), par);
-    std::function<bool(const char*, double)> progress = options_.progress;
-    const std::vector<char> state = internal::lmt_skeleton(pts_, edges_, Zs, by_edge, is_hull_, progress, par);
-    internal::Face_dp_2<internal::Indexed_points_2<Kernel>> dp(pts_, edges_, *index_, Zs, by_edge, state, 400, par);
-    if(dp.number_of_solved_faces() + 1 != dp.number_of_faces()) return 0;   // all but the outer face
-    std::vector<internal::Length_segment> A, B;
-    std::vector<std::pair<int, int>> ea, eb;
-    for(int t : dp.dp_triangles())
-      for(int i = 0; i < 3; ++i) ea.emplace_back(std::minmax(Z[t].v[i], Z[t].v[(i + 1) % 3]));
-    for(const auto& t : chosen)
-      for(int i = 0; i < 3; ++i) eb.emplace_back(std::minmax(t[i], t[(i + 1) % 3]));
-    for(auto* E : {&ea, &eb}) {
-      std::sort(E->begin(), E->end());
-      E->erase(std::unique(E->begin(), E->end()), E->end());
-    }
-    // the programs' triangles must cover the hull once: as many as T* and the same hull edges
-    if(dp.dp_triangles().size() != chosen.size() || ea.size() != eb.size()) return 0;
-    auto seg = [&](const std::pair<int, int>& e) {
-      return internal::Length_segment{{pts_.x(e.first), pts_.y(e.first), pts_.x(e.second), pts_.y(e.second)}};
-    };
-    for(const auto& e : ea) A.push_back(seg(e));
-    for(const auto& e : eb) B.push_back(seg(e));
-    return internal::compare_length_sums(A, B) == 0 ? Z.size() : 0;
-  }
-
-  double dual_lower_bound(const std::vector<double>& y) const
-  {
-    if(y.size() != lp_.number_of_rows) return -HUGE_VAL;
-    Interval lb(0);
-    for(std::size_t i = 0; i < y.size(); ++i) {
-      if(!std::isfinite(y[i])) return -HUGE_VAL;
-      if(row_is_hull_[i]) lb += Interval(y[i]);
-    }
-    for(std::size_t j = 0; j < triangles_.size(); ++j) {
-      const Interval d = reduced_cost(j, y);
-      if(d.inf() < 0) lb += Interval(d.inf());
-    }
-    return (lb * Interval(scale_)).inf();
   }
 
   std::vector<Point_2> input_;

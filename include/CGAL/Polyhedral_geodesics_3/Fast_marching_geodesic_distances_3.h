@@ -101,22 +101,22 @@ public:
   /// On a prepared surface (see `Geodesic_surface_3`), shared with other objects: nothing is rebuilt.
   explicit Fast_marching_geodesic_distances_3(std::shared_ptr<const typename Base::Surface> surface,
                                               Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
-    : Base(std::move(surface), mode)
-  {
-    this->require_oriented_manifold_edges("Fast_marching_geodesic_distances_3", "fast marching unfolds obtuse corners across an edge into its twin's face and descends its paths from face "
-        "to face across edges, which needs every edge to have at most two faces that run through it in opposite "
-        "directions");
-  }
+    : Base(std::move(surface), mode, &special_edges_refusal)
+  {}
 
   /// On a prepared surface that outlives the object.
   explicit Fast_marching_geodesic_distances_3(const typename Base::Surface& surface,
                                               Geodesic_memory_mode mode = Geodesic_memory_mode::full_field)
-    : Base(surface, mode)
-  {
-    this->require_oriented_manifold_edges("Fast_marching_geodesic_distances_3", "fast marching unfolds obtuse corners across an edge into its twin's face and descends its paths from face "
-        "to face across edges, which needs every edge to have at most two faces that run through it in opposite "
-        "directions");
-  }
+    : Base(surface, mode, &special_edges_refusal)
+  {}
+
+private:
+  // A prepared surface with non-manifold or reversed edges is refused: the engine follows `twin` alone.
+  static constexpr internal::Special_edges_refusal special_edges_refusal = {
+      "Fast_marching_geodesic_distances_3",
+      "fast marching unfolds obtuse corners across an edge into its twin's face and descends its paths from face "
+      "to face across edges, which needs every edge to have at most two faces that run through it in opposite "
+      "directions"};
 };
 
 } // namespace Polyhedral_geodesics_3

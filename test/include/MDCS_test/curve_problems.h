@@ -3,6 +3,8 @@
 #ifndef MDCS_TEST_CURVE_PROBLEMS_H
 #define MDCS_TEST_CURVE_PROBLEMS_H
 
+#include <MDCS_test/test_numbers.h> // relative_difference
+
 #include <CGAL/Min_cut.h>
 #include <CGAL/Variational_minimization.h>
 
@@ -52,12 +54,6 @@ inline Checked_solve solve_both_ways(const VM::Curve_problem_2& problem, const V
   s.cut_bk = VM::minimize_curve_functional_2(arrangement, weights, problem, CGAL::Min_cut::Boykov_kolmogorov_max_flow());
   s.path = VM::directed_shortest_path_2(arrangement, weights, problem);
   return s;
-}
-
-inline double relative_difference(double a, double b)
-{
-  if(a == b) return 0;
-  return std::abs(a - b) / std::max(std::abs(a), std::abs(b));
 }
 
 inline double min_value(const VM::Minimal_curve_2& c)

@@ -66,7 +66,7 @@ public:
   {
     const auto r = smsp_.shortest_distance_to_source_points(v);
     const double d = CGAL::to_double(r.first);
-    return d < 0 ? inf() : d;
+    return d < 0 ? inf : d;
   }
 
   double distance(face_descriptor f, const std::array<double, 3>& b)
@@ -74,7 +74,7 @@ public:
     const auto r = smsp_.shortest_distance_to_source_points(
         f, Barycentric_coordinates{{typename K::FT(b[0]), typename K::FT(b[1]), typename K::FT(b[2])}});
     const double d = CGAL::to_double(r.first);
-    return d < 0 ? inf() : d;
+    return d < 0 ? inf : d;
   }
 
   // Index (order of addition) of the nearest source of vertex v.
@@ -169,7 +169,7 @@ std::vector<double> dijkstra_vertex_distances(const Mesh& m, const VertexRange& 
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   auto vim = CGAL::get_initialized_vertex_index_map(m);
   const std::size_t n = num_vertices(m);
-  std::vector<double> d(n, inf());
+  std::vector<double> d(n, inf);
   std::vector<vertex_descriptor> vd(n);
   for(auto v : vertices(m))
     vd[get(vim, v)] = v;
@@ -214,7 +214,7 @@ inline double cube_corner_distance(const Vec3& p, double tol = 1e-12)
   for(int k = 0; k < 3; ++k)
     if(std::abs(p[std::size_t(k)]) <= tol)
       return norm(p);
-  double best = inf();
+  double best = inf;
   for(int k = 0; k < 3; ++k) {
     if(std::abs(p[std::size_t(k)] - 1) > tol)
       continue;
@@ -222,7 +222,7 @@ inline double cube_corner_distance(const Vec3& p, double tol = 1e-12)
     best = std::min(best, std::sqrt((1 + a) * (1 + a) + b * b));
     best = std::min(best, std::sqrt((1 + b) * (1 + b) + a * a));
   }
-  if(best == inf())
+  if(best == inf)
     throw std::invalid_argument("cube_corner_distance: the point is not on the unit cube");
   return best;
 }
@@ -258,7 +258,7 @@ inline double unfolded_distance(const Vec3& s, const Vec3& a, const Vec3& b, con
   const double t = (0 - sy) / (py - sy);
   const double x = sx + t * (px - sx);
   if(x < -1e-12 * L || x > L * (1 + 1e-12))
-    return inf();
+    return inf;
   return std::hypot(px - sx, py - sy);
 }
 
@@ -313,13 +313,13 @@ struct Rectangle_hole_domain
     // Dijkstra on the 4 corners (tiny: Bellman-Ford style relaxation)
     std::array<double, 4> d;
     for(int i = 0; i < 4; ++i)
-      d[std::size_t(i)] = blocked(s, corner[std::size_t(i)]) ? inf() : dist(s, corner[std::size_t(i)]);
+      d[std::size_t(i)] = blocked(s, corner[std::size_t(i)]) ? inf : dist(s, corner[std::size_t(i)]);
     for(int round = 0; round < 4; ++round)
       for(int i = 0; i < 4; ++i)
         for(int j = 0; j < 4; ++j)
           if(i != j && !blocked(corner[std::size_t(i)], corner[std::size_t(j)]))
             d[std::size_t(j)] = std::min(d[std::size_t(j)], d[std::size_t(i)] + dist(corner[std::size_t(i)], corner[std::size_t(j)]));
-    double best = blocked(s, p) ? inf() : dist(s, p);
+    double best = blocked(s, p) ? inf : dist(s, p);
     for(int i = 0; i < 4; ++i)
       if(!blocked(corner[std::size_t(i)], p))
         best = std::min(best, d[std::size_t(i)] + dist(corner[std::size_t(i)], p));

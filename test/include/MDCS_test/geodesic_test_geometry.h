@@ -8,10 +8,13 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/number_utils.h>
 
+#include <MDCS_test/test_numbers.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <iomanip>
 #include <limits>
 #include <random>
@@ -28,7 +31,6 @@ namespace MDCS_test {
 
 typedef std::array<double, 3> Vec3;
 
-inline double inf() { return std::numeric_limits<double>::infinity(); }
 
 // x with 17 significant digits (for messages).
 inline std::string format(double x)
@@ -99,7 +101,7 @@ double path_length(const Range& points)
 template <class Mesh>
 double bbox_diagonal(const Mesh& m)
 {
-  Vec3 lo{inf(), inf(), inf()}, hi{-inf(), -inf(), -inf()};
+  Vec3 lo{inf, inf, inf}, hi{-inf, -inf, -inf};
   for(auto v : vertices(m)) {
     const Vec3 p = to_vec3(get(CGAL::vertex_point, m, v));
     for(int k = 0; k < 3; ++k) {
@@ -194,7 +196,7 @@ template <class Mesh>
 typename boost::graph_traits<Mesh>::vertex_descriptor nearest_vertex(const Mesh& m, const Vec3& p)
 {
   typename boost::graph_traits<Mesh>::vertex_descriptor best = *vertices(m).begin();
-  double bd = inf();
+  double bd = inf;
   for(auto v : vertices(m)) {
     const double d = dist(vertex_vec3(m, v), p);
     if(d < bd) {
@@ -217,6 +219,23 @@ std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> spread_vertic
   std::sort(r.begin(), r.end());
   r.erase(std::unique(r.begin(), r.end()), r.end());
   return r;
+}
+
+// The relative agreement required of the exact methods (with each other and with analytic values).
+const double tolerance = 1e-12;
+
+inline bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+// Position of `v` in vertices(m) (num_vertices(m) if absent), and the vertex at a position.
+template <class Mesh>
+std::size_t index_of(const Mesh& m, typename boost::graph_traits<Mesh>::vertex_descriptor v)
+{
+  return std::size_t(std::distance(vertices(m).begin(), std::find(vertices(m).begin(), vertices(m).end(), v)));
+}
+template <class Mesh>
+typename boost::graph_traits<Mesh>::vertex_descriptor vertex_at(const Mesh& m, std::size_t i)
+{
+  return *std::next(vertices(m).begin(), std::ptrdiff_t(i));
 }
 
 } // namespace MDCS_test

@@ -4,6 +4,9 @@
 #define MDCS_TEST_MIN_CUT_NETWORKS_H
 
 #include <CGAL/Min_cut/Flow_network.h>
+#include <CGAL/Min_cut/Planar_dual.h>
+
+#include <MDCS_test/test_numbers.h> // inf, which is Network::infinity()
 
 #include <cstdint>
 #include <random>
@@ -69,6 +72,32 @@ inline Network grid_network(std::size_t width, std::size_t height, bool function
       if(y + 1 == height) network.add_sink_facet(i, 3 * cost(), id++);
     }
   return network;
+}
+
+// The planar dual of MDCS_test::grid_network(width, height, ...): node (x, y) is the unit square
+// [x, x+1] x [y, y+1], dual vertices are the square corners, the source lies below the grid and the sink above
+// it, and a cut runs from the left side (start) to the right side (end) with the source on its right.
+inline CGAL::Min_cut::Planar_dual grid_dual(const Network& network, std::size_t width, std::size_t height)
+{
+  auto corner = [&](std::size_t X, std::size_t Y) { return CGAL::Min_cut::Planar_dual::Vertex_index(Y * (width + 1) + X); };
+  CGAL::Min_cut::Planar_dual dual;
+  dual.number_of_vertices = (width + 1) * (height + 1);
+  for(const auto& f : network.facets()) {
+    const std::size_t x = f.u % width, y = f.u / width;
+    if(f.v == f.u + 1) // v right of u: the shared side is x + 1, walked downwards to keep u on the right
+      dual.edges.push_back({corner(x + 1, y + 1), corner(x + 1, y)});
+    else // v above u: the shared side is y + 1, walked to the right (u below, on the right)
+      dual.edges.push_back({corner(x, y + 1), corner(x + 1, y + 1)});
+  }
+  for(const auto& f : network.source_facets()) // bottom side, walked to the right: the source below, on the right
+    dual.source_edges.push_back({corner(f.node % width, 0), corner(f.node % width + 1, 0)});
+  for(const auto& f : network.sink_facets()) // top side, walked to the right: the node below, on the right
+    dual.sink_edges.push_back({corner(f.node % width, height), corner(f.node % width + 1, height)});
+  for(std::size_t Y = 0; Y <= height; ++Y) {
+    dual.start_vertices.push_back(corner(0, Y));
+    dual.end_vertices.push_back(corner(width, Y));
+  }
+  return dual;
 }
 
 } // namespace MDCS_test

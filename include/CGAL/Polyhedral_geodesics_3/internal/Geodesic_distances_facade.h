@@ -49,6 +49,16 @@ namespace CGAL {
 namespace Polyhedral_geodesics_3 {
 namespace internal {
 
+// What a class whose engine follows `twin` alone (fast marching, flat-exact) gives the facade's constructors on a
+// prepared surface: such an engine cannot run on non-manifold or reversed edges (only a surface made from a
+// triangle soup has them; a FaceGraph never does), so the surface is refused with std::invalid_argument naming
+// the class and why its engine needs every edge to be an oriented manifold edge.
+struct Special_edges_refusal
+{
+  const char* class_name;
+  const char* why;
+};
+
 template <class TriangleMesh, class FT_, class VertexPointMap, class Engine_>
 class Geodesic_distances_facade
 {
@@ -78,16 +88,21 @@ public:
     : Geodesic_distances_facade(std::make_shared<const Surface>(tm, vpm), mode)
   {}
 
-  // On a shared surface.
-  Geodesic_distances_facade(std::shared_ptr<const Surface> surface, Geodesic_memory_mode mode)
+  // On a shared surface; with a refusal, a surface with special edges is refused (see Special_edges_refusal).
+  Geodesic_distances_facade(std::shared_ptr<const Surface> surface, Geodesic_memory_mode mode,
+                            const Special_edges_refusal* refusal = nullptr)
     : surface_(std::move(surface)), mesh_(checked_surface(surface_).compact_mesh()), mode_(mode)
   {
+    if(refusal != nullptr)
+      require_oriented_manifold_edges(*refusal);
     engine_.reset(new Engine(mesh_));
   }
 
   // On a surface that outlives the object.
-  Geodesic_distances_facade(const Surface& surface, Geodesic_memory_mode mode)
-    : Geodesic_distances_facade(std::shared_ptr<const Surface>(std::shared_ptr<const Surface>(), &surface), mode)
+  Geodesic_distances_facade(const Surface& surface, Geodesic_memory_mode mode,
+                            const Special_edges_refusal* refusal = nullptr)
+    : Geodesic_distances_facade(std::shared_ptr<const Surface>(std::shared_ptr<const Surface>(), &surface), mode,
+                                refusal)
   {}
 
   Geodesic_distances_facade(const Geodesic_distances_facade&) = delete;
@@ -340,19 +355,18 @@ protected:
   // Options of a derived class changed: the next query recomputes.
   void invalidate() { computed_ = false; }
 
-  // For the classes whose engine follows `twin` alone: refuses a surface with non-manifold or reversed edges.
-  void require_oriented_manifold_edges(const char* class_name, const char* why) const
+private:
+  void require_oriented_manifold_edges(const Special_edges_refusal& refusal) const
   {
     if(!mesh_.has_special_edges())
       return;
-    throw std::invalid_argument(std::string("CGAL::Polyhedral_geodesics_3::") + class_name + ": the surface has " +
-                                std::to_string(mesh_.number_of_nonmanifold_edges) +
+    throw std::invalid_argument(std::string("CGAL::Polyhedral_geodesics_3::") + refusal.class_name +
+                                ": the surface has " + std::to_string(mesh_.number_of_nonmanifold_edges) +
                                 " edges of three or more faces and " + std::to_string(mesh_.number_of_reversed_edges) +
                                 " edges whose two faces are oriented against each other (non-orientable gluing); " +
-                                why + " (the exact, merged-window and Dijkstra classes support such surfaces)");
+                                refusal.why + " (the exact, merged-window and Dijkstra classes support such surfaces)");
   }
 
-private:
   struct Source
   {
     bool at_vertex;
