@@ -11,13 +11,19 @@
 //
 //   bench_distance_matrix [--meshes NAMES] [--mesh-dir DIR] [--extra-dir DIR] [--runs N] [--threads 1,2]
 //                         [--sources S] [--radius-edges R] [--parts dense,sparse] [--method NAME] [--csv FILE]
-//                         [--quick] [--list]
+//                         [--write-matrix FILE] [--quick] [--list]
 // Default mesh: refined_elephant after one Loop subdivision (177,842 vertices). --quick: the unsubdivided
 // refined_elephant (44,460), 20 sources, 1 run, a check of the whole pipeline on a small input.
+// --write-matrix FILE: the sparse symmetric matrix of the first run (Matrix Market, 17 digits: bit for bit), to
+// compare two versions of the code; the console also prints a checksum of it (FNV-1a of its columns and the bits of
+// its values).
 #include <geodesic_bench_common.h>
 
 #include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
+#include <CGAL/Polyhedral_geodesics_3/IO/distance_matrix_files.h>
 #include <CGAL/Polyhedral_geodesics_3/geodesic_distance_matrix.h>
+
+#include <cstring>
 
 #include <iostream>
 #include <map>
@@ -34,6 +40,7 @@ struct Options
   std::size_t sources = 100;
   double radius_edges = 5;
   bool dense = true, sparse = true, quick = false;
+  std::string write_matrix;
   PG::Geodesic_method method = PG::Geodesic_method::exact;
 };
 
@@ -41,7 +48,27 @@ void usage()
 {
   std::cerr << "usage: bench_distance_matrix [--meshes NAMES] [--mesh-dir DIR] [--extra-dir DIR] [--runs N] [--threads 1,2]\n"
                "                             [--sources S] [--radius-edges R] [--parts dense,sparse] [--method exact|merged|flat-exact|fmm|dijkstra]\n"
-               "                             [--csv FILE] [--quick] [--list]\n";
+               "                             [--csv FILE] [--write-matrix FILE] [--quick] [--list]\n";
+}
+
+// FNV-1a over the row starts, columns and value bits of a sparse matrix.
+std::uint64_t checksum(const PG::Geodesic_sparse_matrix& m)
+{
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&](std::uint64_t x) {
+    for(int b = 0; b < 8; ++b) {
+      h ^= (x >> (8 * b)) & 0xff;
+      h *= 1099511628211ull;
+    }
+  };
+  for(std::size_t r : m.row_begin) mix(r);
+  for(std::uint32_t c : m.column) mix(c);
+  for(double v : m.value) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    mix(bits);
+  }
+  return h;
 }
 
 double full_single_source_seconds(const Mesh& mesh, Vertex s, double& cpu)
@@ -88,6 +115,7 @@ int main(int argc, char** argv)
       for(const std::string& t : split(argv[++i], ',')) o.threads.push_back(std::size_t(std::stoul(t)));
     } else if(a == "--sources" && v) o.sources = std::size_t(std::stoul(argv[++i]));
     else if(a == "--radius-edges" && v) o.radius_edges = std::atof(argv[++i]);
+    else if(a == "--write-matrix" && v) o.write_matrix = argv[++i];
     else if(a == "--parts" && v) {
       const std::string p = argv[++i];
       o.dense = p.find("dense") != std::string::npos;
@@ -201,6 +229,7 @@ int main(int argc, char** argv)
       std::map<std::size_t, std::size_t> entries;
       std::map<std::size_t, std::vector<double>> values;
       bool symmetric = true;
+      std::uint64_t sum = 0;
       for(int r = 0; r < o.common.runs; ++r) {
         run_full();
         for(std::size_t t : o.threads) {
@@ -226,6 +255,13 @@ int main(int argc, char** argv)
           entries[t] = m.number_of_entries();
           if(r == 0) {
             values[t] = m.value;
+            if(t == o.threads.front()) {
+              sum = checksum(m);
+              if(!o.write_matrix.empty()) {
+                std::ofstream out(o.write_matrix);
+                PG::IO::write_matrix_market(out, m, "bench_distance_matrix: " + spec.name);
+              }
+            }
             for(std::size_t u = 0; u < m.rows && symmetric; ++u)
               for(std::size_t k = m.row_begin[u]; k < m.row_begin[u + 1]; ++k)
                 if(m.at(m.column[k], u) != m.value[k] || m.value[k] > r_max) { symmetric = false; break; }
@@ -256,6 +292,7 @@ int main(int argc, char** argv)
                   << " full runs on an idle machine"
                   << (symmetric ? "" : "  NOT SYMMETRIC") << (identical ? "" : "  DIFFERS") << "\n";
       }
+      std::cout << "  sparse matrix checksum " << std::hex << sum << std::dec << "\n";
     }
   }
   std::cout << "\n";

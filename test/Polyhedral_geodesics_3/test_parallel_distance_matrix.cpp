@@ -239,6 +239,61 @@ TEST_CASE("local_geodesic_distance_rows: every pair within max_distance, nothing
   }
 }
 
+// The local matrix's exact rows run one vertex-oriented engine per thread on the whole mesh, reused from row to row
+// (only what the last run touched is reset): every run must equal a run on a fresh engine, bit for bit, whatever
+// ran before it (other sources, other limits, no limit, parents recorded or not).
+TEST_CASE("vertex-oriented engine reused between runs: every run equals one on a fresh engine",
+          "[geodesics][matrix][local]")
+{
+  typedef PG::internal::Vertex_oriented_window_propagation<double> Engine;
+  for(int mesh_kind = 0; mesh_kind < 2; ++mesh_kind) {
+    const Mesh m = mesh_kind == 0 ? bumpy() : grid_and_sphere();
+    INFO((mesh_kind == 0 ? "bumpy sphere" : "grid and sphere"));
+    const PG::Geodesic_surface_3<Mesh> surface(m);
+    const PG::internal::Matrix_mesh& mesh = surface.compact_mesh();
+    const double r = 5 * mean_edge_length(m);
+    Engine reused(mesh);
+    reused.set_reuse_between_runs(true);
+    const double limits[] = {r, 2.5 * r, inf, 0.5 * r, r};
+    std::size_t runs = 0, compared = 0, differ = 0, untracked = 0;
+    for(std::size_t k = 0; k < 15; ++k) {
+      const PG::internal::Matrix_index source = PG::internal::Matrix_index((k * 37) % mesh.number_of_vertices);
+      const double limit = limits[k % 5];
+      const bool parents = k >= 10; // the parents array appears: a full reset, then sparse ones again
+      Engine fresh(mesh);
+      for(Engine* e : {&reused, &fresh}) {
+        e->set_record_parents(parents);
+        if(limit < inf) e->set_distance_limit(limit);
+        else e->clear_distance_limit();
+        e->clear();
+        e->add_vertex_source(source, 0);
+        CGAL::MDCS::No_progress none;
+        e->run(none);
+      }
+      ++runs;
+      std::vector<char> tracked(mesh.number_of_vertices, 0);
+      for(PG::internal::Matrix_index v : reused.touched_vertices()) tracked[std::size_t(v)] = 1;
+      for(std::size_t v = 0; v < mesh.number_of_vertices; ++v) {
+        const PG::internal::Matrix_index i = PG::internal::Matrix_index(v);
+        if(fresh.vertex_distance(i) < inf) {
+          ++compared;
+          if(!tracked[v]) ++untracked;
+        }
+        if(fresh.vertex_distance(i) != reused.vertex_distance(i) || fresh.vertex_source(i) != reused.vertex_source(i))
+          ++differ;
+        else if(parents && fresh.vertex_distance(i) < inf &&
+                (fresh.parent(i).halfedge != reused.parent(i).halfedge || fresh.parent(i).root != reused.parent(i).root ||
+                 fresh.parent(i).at != reused.parent(i).at))
+          ++differ;
+      }
+    }
+    INFO(runs << " runs, " << compared << " vertices with a distance");
+    CHECK(compared > 15 * 20);
+    CHECK(differ == 0);
+    CHECK(untracked == 0); // every vertex with a distance is among those the next clear() resets
+  }
+}
+
 TEST_CASE("symmetric_local_geodesic_distance_matrix: symmetric by construction, the smaller direction kept",
           "[geodesics][matrix][local][parallel]")
 {

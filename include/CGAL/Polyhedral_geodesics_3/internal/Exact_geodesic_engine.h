@@ -48,15 +48,20 @@ public:
     // miss shortest paths that run along the line of such faces: from vertex 2 of CGAL's degtri_sliding.off it
     // gave 3 at vertex 7, where the window propagation (and every small perturbation of the mesh) gives
     // sqrt(5). On such meshes every run uses the window propagation.
-    for(const Geodesic_halfedge<FT>& r : mesh_.he)
-      if(!(r.opposite.y > FT(0)) || r.length == FT(0)) {
-        has_zero_area_face_ = true;
-        break;
-      }
+    has_zero_area_face_ = has_zero_area_face(mesh_);
     // The vertex-oriented schedule follows `twin` alone: an edge of three or more faces, or one whose two faces
     // run through it in the same direction (a non-orientable gluing), would be a border to it. The window
     // propagation crosses such edges into every other face (geodesic_window.h).
     has_special_edges_ = mesh_.has_special_edges();
+  }
+
+  // Whether a face of `mesh` has zero area (the vertex-oriented schedule is then never used on it).
+  static bool has_zero_area_face(const Mesh& mesh)
+  {
+    for(const Geodesic_halfedge<FT>& r : mesh.he)
+      if(!(r.opposite.y > FT(0)) || r.length == FT(0))
+        return true;
+    return false;
   }
 
   void clear()

@@ -130,15 +130,30 @@ public:
   void clear()
   {
     const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
-    vertices_.assign(nv, Vertex_record{unreached_, -1, 0, OUTSIDE, 0});
-    for(std::size_t v = 0; v < nv; ++v)
-      vertices_[v].flags = vertex_flags_[v];
-    if(record_parents_)
-      parents_.assign(nv, Parent{FT(0), FT(0), FT(0), -1, -1});
-    else
-      std::vector<Parent>().swap(parents_);
-    lists_.reset(nh);
-    queued_.assign(nh, 0);
+    if(reuse_ && reuse_ready_) {
+      // Only what the last run changed (see set_reuse_between_runs()).
+      for(Index v : touched_vertices_) {
+        vertices_[std::size_t(v)] = Vertex_record{unreached_, -1, 0, OUTSIDE, vertex_flags_[std::size_t(v)]};
+        if(record_parents_)
+          parents_[std::size_t(v)] = Parent{FT(0), FT(0), FT(0), -1, -1};
+      }
+      for(Index g : used_lists_)
+        queued_[std::size_t(g)] = 0;
+      lists_.clear_lists(used_lists_);
+    } else {
+      vertices_.assign(nv, Vertex_record{unreached_, -1, 0, OUTSIDE, 0});
+      for(std::size_t v = 0; v < nv; ++v)
+        vertices_[v].flags = vertex_flags_[v];
+      if(record_parents_)
+        parents_.assign(nv, Parent{FT(0), FT(0), FT(0), -1, -1});
+      else
+        std::vector<Parent>().swap(parents_);
+      lists_.reset(nh);
+      queued_.assign(nh, 0);
+      reuse_ready_ = reuse_;
+    }
+    touched_vertices_.clear();
+    used_lists_.clear();
     heap_.clear();
     pending_.clear();
     fifo_.clear();
@@ -152,7 +167,25 @@ public:
   }
 
   // distances_only runs need no parents (32 bytes per vertex with double).
-  void set_record_parents(bool record) { record_parents_ = record; }
+  void set_record_parents(bool record)
+  {
+    if(record != record_parents_)
+      reuse_ready_ = false; // the parents array changes size: the next clear() is a full one
+    record_parents_ = record;
+  }
+  // Many runs on one mesh, each reaching a small part of it (a limited run from every vertex: the local distance
+  // matrix): the run then keeps its lists, queue and arrays allocated, records the vertices and window lists it
+  // changes, and clear() resets only those, so that a run costs what it reaches, not the size of the mesh. The
+  // results are those of a run after a full clear(). Takes effect at the next clear().
+  void set_reuse_between_runs(bool reuse)
+  {
+    if(reuse != reuse_)
+      reuse_ready_ = false;
+    reuse_ = reuse;
+  }
+  // With reuse: every vertex whose record the last run changed (each once, in the order reached); a superset of
+  // the vertices with a distance.
+  const std::vector<Index>& touched_vertices() const { return touched_vertices_; }
   bool records_parents() const { return record_parents_; }
   // Approximation by interval merging (absolute tolerance; 0: exact). See Vertex_oriented_batch.
   void set_merge_tolerance(const FT& tolerance) { merge_tolerance_ = tolerance; }
@@ -167,6 +200,7 @@ public:
     if(v < 0 || std::size_t(v) >= mesh_.number_of_vertices)
       throw std::invalid_argument("CGAL::Polyhedral_geodesics_3: source vertex not in the mesh");
     Vertex_record& r = vertices_[std::size_t(v)];
+    touch(r, v);
     r.flags |= IS_SOURCE;
     if(FT(0) < r.dist) {
       r.dist = FT(0);
@@ -309,7 +343,7 @@ public:
 
 private:
   enum State : std::uint8_t { OUTSIDE = 0, FRONT = 1, INSIDE = 2 };
-  enum Flag : std::uint8_t { PSEUDO_SOURCE = 1, LOBE_VERTEX = 2, IS_SOURCE = 4, SETTLED_ONCE = 8 };
+  enum Flag : std::uint8_t { PSEUDO_SOURCE = 1, LOBE_VERTEX = 2, IS_SOURCE = 4, SETTLED_ONCE = 8, TOUCHED = 16 };
 
   // What the propagation keeps per vertex, in one record: a batch reads and writes its three vertices, one cache
   // line each.
@@ -320,6 +354,15 @@ private:
     std::uint32_t stamp;
     std::uint8_t state, flags;
   };
+
+  // With reuse between runs: records v (once per run) as one that clear() has to reset.
+  void touch(Vertex_record& r, Index v)
+  {
+    if(reuse_ && !(r.flags & TOUCHED)) {
+      r.flags |= TOUCHED;
+      touched_vertices_.push_back(v);
+    }
+  }
 
   struct Heap_entry
   {
@@ -368,6 +411,7 @@ private:
     Vertex_record& r = vertices_[std::size_t(v)];
     if(!(d < r.dist))
       return false;
+    touch(r, v);
     r.dist = d;
     r.source = source;
     ++stats_.vertex_updates;
@@ -486,6 +530,8 @@ private:
 
   void add_window(Index g, const Window& w)
   {
+    if(reuse_ && lists_.empty(g))
+      used_lists_.push_back(g); // (again after each take(): at most once per window)
     lists_.push(g, w);
     ++stats_.windows_created;
     if(++live_ > stats_.peak_live_windows)
@@ -557,20 +603,29 @@ private:
                               vertices_.capacity() * sizeof(Vertex_record) + parents_.capacity() * sizeof(Parent);
     if(bytes > stats_.peak_memory_bytes)
       stats_.peak_memory_bytes = bytes;
-    lists_.release();
-    std::vector<char>().swap(queued_);
-    heap_.release();
-    pending_.release();
-    std::vector<Index>().swap(fifo_);
+    if(!reuse_) {
+      lists_.release();
+      std::vector<char>().swap(queued_);
+      heap_.release();
+      pending_.release();
+      std::vector<Index>().swap(fifo_);
+    }
     if(stopped_early_ || has_limit_) {
       // Only values up to the front (or the limit) are final; the others are reported as unreachable, never as a
       // wrong value (distance_lower_bound() then says that they lie beyond the bound).
       const FT bound = final_bound();
-      for(Vertex_record& r : vertices_)
+      const auto cut = [&](Vertex_record& r) {
         if(r.dist > bound) {
           r.dist = unreached_;
           r.source = -1;
         }
+      };
+      if(reuse_) // the others still have no value
+        for(Index v : touched_vertices_)
+          cut(vertices_[std::size_t(v)]);
+      else
+        for(Vertex_record& r : vertices_)
+          cut(r);
     }
   }
 
@@ -668,6 +723,8 @@ private:
   FT merge_tolerance_ = FT(0);
   FT limit_ = FT(0), front_ = FT(0);
   bool has_limit_ = false, stopped_early_ = false, record_parents_ = false;
+  bool reuse_ = false, reuse_ready_ = false; // reuse between runs; ready: the arrays are sized and reset
+  std::vector<Index> touched_vertices_, used_lists_;
   std::vector<Index> stop_targets_;
   Backward_query* query_ = nullptr;
   std::vector<Index> star_begin_, star_;

@@ -61,6 +61,18 @@ public:
     peak_chunks_ = 0;
   }
 
+  // Empties the lists of `halfedges` (every list that may hold windows) and frees every chunk, keeping the blocks
+  // and the arrays allocated: the next run costs what it touches, not the number of halfedges (reused engines).
+  void clear_lists(const std::vector<Index>& halfedges)
+  {
+    for(Index g : halfedges)
+      head_[std::size_t(g)] = -1;
+    chunk_next_.clear();
+    chunk_count_.clear();
+    free_.clear();
+    live_chunks_ = 0;
+  }
+
   void release()
   {
     std::vector<Index>().swap(head_);
@@ -168,7 +180,7 @@ private:
       free_.pop_back();
     } else {
       c = Index(chunk_next_.size());
-      if(std::size_t(c) % block_chunks == 0)
+      if(std::size_t(c) / block_chunks >= blocks_.size()) // the blocks kept by clear_lists() are reused
         blocks_.emplace_back(new_block());
       chunk_next_.push_back(-1);
       chunk_count_.push_back(0);
