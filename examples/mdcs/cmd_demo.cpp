@@ -1,8 +1,14 @@
-// `mdcs demo`: its option table and its run (cmd_demo.h and the demo_*.h sections).
-#include "cmd_demo.h"
+// `mdcs demo`: its option table and its run (cmd_demo.h and the demo_*.cpp sections). A build configured with
+// -DMDCS_CLI_DEMO=OFF (the sanitizer build of the test suite) keeps the option table and leaves the run out.
 #include "commands.h"
+#ifdef MDCS_CLI_DEMO
+#include "cmd_demo.h"
+#else
+#include "cli_common.h"
+#endif
 
 #include <iostream>
+#include <stdexcept>
 
 namespace mdcs_cli {
 
@@ -38,6 +44,11 @@ Command_spec demo_spec()
 
 int run_demo_command(Invocation& run)
 {
+#ifndef MDCS_CLI_DEMO
+  (void)run;
+  throw std::runtime_error("this mdcs was built without the demo (-DMDCS_CLI_DEMO=OFF, as the sanitizer build of the "
+                           "test suite is); scripts/run_demo.sh builds and runs it");
+#else
   const std::string output = run.options.text("output");
   Json_object checks;
   const bool ok = run_demo(output, run.options.flag("quick"), run.progress, checks);
@@ -46,6 +57,7 @@ int run_demo_command(Invocation& run)
   json.results.add("checks_passed", ok).add("checks", checks).add("summary_md", (std::filesystem::path(output) / "summary.md").string());
   json.write((std::filesystem::path(output) / "summary.json").string(), run, code);
   return code;
+#endif
 }
 
 } // namespace mdcs_cli

@@ -7,6 +7,159 @@
 
 namespace mdcs_cli {
 
+namespace sil_detail {
+
+Run_summary run_silhouette(const Mesh& fine, const Run_parameters& p, const std::filesystem::path& folder, const Progress_bar& progress)
+{
+  Run_summary sum;
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(fine);
+  auto t0 = std::chrono::steady_clock::now();
+  SS::Coarse_mesh_options co;
+  co.target_faces = p.coarse_faces;
+  const auto coarse = SS::build_coarse_mesh(fine, get(CGAL::vertex_point, fine), co, std::ref(progress));
+  progress.begin("silhouette preprocessing");
+  Simplifier s(fine, coarse.mesh, coarse.coarse_face_of_fine_face);
+  progress.end();
+  sum.preprocess_s = seconds_since(t0);
+  sum.fine_faces = num_faces(fine);
+  sum.coarse_faces = num_faces(coarse.mesh);
+
+  SS::Loop_mapping_options mo;
+  mo.alpha = p.alpha;
+  Camera cam = orbit_camera(box, p.azimuth, p.elevation, p.up);
+  cam.perspective = !p.orthographic;
+  auto view_of = [&](const Camera& c) { return p.orthographic ? View::orthographic(c.f) : View::perspective(c.eye); };
+  SS::Silhouette_frame frame;
+  t0 = std::chrono::steady_clock::now();
+  s.extract(view_of(cam), frame);
+  sum.extract_ms = ms_since(t0);
+  if(p.picking) { t0 = std::chrono::steady_clock::now(); s.pick_loops(frame); sum.picking_ms = ms_since(t0); }
+  if(p.mapping) { t0 = std::chrono::steady_clock::now(); s.map_loops(frame, mo); sum.mapping_ms = ms_since(t0); }
+  check_frame(s, frame, sum);
+  sum.fine_edges = frame.fine_silhouette.size();
+  sum.coarse_edges = frame.coarse_silhouette.size();
+  sum.picked_edges = frame.picked_halfedges().size();
+  sum.mapped_edges = frame.mapped_halfedges().size();
+  sum.fine_loops = frame.fine_loops.size();
+  sum.coarse_loops = frame.coarse_loops.size();
+  sum.picked_loops = frame.picked.size();
+  sum.mapped_loops = frame.mapped.size();
+
+  t0 = std::chrono::steady_clock::now();
+  const std::string loops_csv = (folder / "loops.csv").string(), coarse_off = (folder / "coarse.off").string();
+  write_loops_csv(loops_csv, s, frame, p);
+  write_off_checked(coarse_off, coarse.mesh);
+  sum.files = {loops_csv, coarse_off};
+  const std::string svg = (folder / "silhouette.svg").string();
+  if(p.picture) {
+    std::vector<Edge_set> sets;
+    sets.push_back({"fine silhouette, " + std::to_string(sum.fine_edges) + " edges", "#444", frame.fine_silhouette, 0.8});
+    sets.push_back({"coarse silhouette, " + std::to_string(sum.coarse_edges) + " edges", "#1f77b4", frame.coarse_silhouette, 1.2});
+    if(p.picking) sets.push_back({"picked (A), " + std::to_string(sum.picked_edges) + " edges", "#2ca02c", frame.picked_halfedges(), 1.0});
+    if(p.mapping) sets.push_back({"mapped (B), " + std::to_string(sum.mapped_edges) + " edges", "#d62728", frame.mapped_halfedges(), 1.0});
+    write_svg(svg, s, {cam, side_camera(cam)}, {"front", "side"}, sets,
+              p.name + ": " + std::to_string(sum.fine_faces) + " faces, coarse " + std::to_string(sum.coarse_faces) + " faces");
+    sum.files.push_back(svg);
+    if(svg_to_png(svg)) sum.files.push_back((folder / "silhouette.png").string());
+  }
+  sum.output_s = seconds_since(t0);
+
+  if(p.frames > 1) {
+    t0 = std::chrono::steady_clock::now();
+    const std::string frames_csv = (folder / "frames.csv").string();
+    Output_file csv(frames_csv);
+    csv << "frame,azimuth_deg,fine_edges,picked_edges,mapped_edges\n";
+    // The rotation: its frames in parallel (simplify_silhouette_frames; every frame equals the per-view calls),
+    // delivered in order, one at a time, possibly on a worker thread: no thread-local state below.
+    std::vector<View> views;
+    std::vector<Camera> cameras;
+    for(long t = 0; t < p.frames; ++t) {
+      Camera c = orbit_camera(box, p.azimuth + 360.0 * double(t) / double(p.frames), p.elevation, p.up);
+      c.perspective = !p.orthographic;
+      cameras.push_back(c);
+      views.push_back(view_of(c));
+    }
+    SS::Silhouette_frames_options fo;
+    fo.pick = p.picking;
+    fo.map = p.mapping;
+    fo.mapping = mo;
+    fo.threads = p.threads;
+    auto stage = [&progress](const char* name, double f) { return progress(name, f); };
+    SS::simplify_silhouette_frames<CGAL::Parallel_if_available_tag>(
+      s, views, fo,
+      [&](std::size_t t, SS::Silhouette_frame& cur) {
+        const double az = p.azimuth + 360.0 * double(t) / double(p.frames);
+        check_frame(s, cur, sum);
+        if(p.picture) {
+          std::vector<Edge_set> fs = {{"fine, " + std::to_string(cur.fine_silhouette.size()) + " edges", "#444", cur.fine_silhouette, 0.8}};
+          if(p.picking) fs.push_back({"picked, " + std::to_string(cur.picked_halfedges().size()) + " edges", "#2ca02c", cur.picked_halfedges(), 1.0});
+          if(p.mapping) fs.push_back({"mapped, " + std::to_string(cur.mapped_halfedges().size()) + " edges", "#d62728", cur.mapped_halfedges(), 1.0});
+          std::ostringstream name;
+          name << "frame_" << std::setw(p.frames > 1000 ? 4 : 3) << std::setfill('0') << t << ".svg";
+          write_svg((folder / name.str()).string(), s, {cameras[t]}, {"front"}, fs, p.name + ", azimuth " + std::to_string(int(az)) + " deg");
+        }
+        csv << t << "," << az << "," << cur.fine_silhouette.size() << "," << cur.picked_halfedges().size() << ","
+            << cur.mapped_halfedges().size() << "\n";
+      },
+      CGAL::Min_cut::Default_max_flow_engine(), stage);
+    csv.commit();
+    sum.files.push_back(frames_csv);
+    if(p.picture) sum.files.push_back((folder / "frame_*.svg").string());
+    sum.rotation_s = seconds_since(t0);
+    // Temporal coherence over small steps (0.5 degree), both methods, with and without the remedy (frame t biased
+    // by frame t - 1: simplify_silhouette_frames runs the biased method in view order, the extraction in parallel).
+    t0 = std::chrono::steady_clock::now();
+    std::vector<View> steps;
+    for(long t = 0; t < 40; ++t) steps.push_back(view_of(orbit_camera(box, p.azimuth + 0.5 * double(t), p.elevation, p.up)));
+    for(int variant = 0; variant < 4; ++variant) {
+      const bool mapping = variant >= 2, remedy = variant % 2 == 1;
+      if((mapping && !p.mapping) || (!mapping && !p.picking)) continue;
+      std::vector<std::vector<std::uint32_t>> fsets, ssets;
+      SS::Silhouette_frames_options co = fo;
+      co.pick = !mapping;
+      co.map = mapping;
+      if(remedy) { co.picking.previous_bias = p.remedy_bias; co.mapping.previous_bias = p.remedy_bias; }
+      auto step_progress = [&progress, variant](const char*, double f) { return progress("temporal coherence", (variant + f) / 4.0); };
+      SS::simplify_silhouette_frames<CGAL::Parallel_if_available_tag>(
+        s, steps, co,
+        [&](std::size_t, SS::Silhouette_frame& cur) {
+          std::vector<std::uint32_t> f, e;
+          for(std::uint32_t h : cur.fine_silhouette) f.push_back(s.fine().edge(h));
+          for(std::uint32_t h : mapping ? cur.mapped_halfedges() : cur.picked_halfedges()) e.push_back(s.fine().edge(h));
+          fsets.push_back(std::move(f));
+          ssets.push_back(std::move(e));
+        },
+        CGAL::Min_cut::Default_max_flow_engine(), step_progress);
+      sum.incoherence[variant] = SS::temporal_incoherence(ssets, fsets);
+    }
+    progress("temporal coherence", 1.0);
+    sum.coherence_s = seconds_since(t0);
+  }
+  std::ostringstream r;
+  r << p.name << ": fine " << sum.fine_faces << " faces, coarse " << sum.coarse_faces << " faces (preprocessing "
+    << std::setprecision(3) << sum.preprocess_s << " s)\n"
+    << "  silhouette: fine " << sum.fine_edges << " edges in " << sum.fine_loops << " loops, coarse " << sum.coarse_edges
+    << " edges in " << sum.coarse_loops << " loops (extraction + decomposition " << sum.extract_ms << " ms)\n";
+  if(p.picking) r << "  loop picking: " << sum.picked_loops << " loops, " << sum.picked_edges << " edges, " << sum.picking_ms << " ms\n";
+  if(p.mapping) r << "  loop mapping: " << sum.mapped_loops << " loops, " << sum.mapped_edges << " edges, " << sum.mapping_ms << " ms\n";
+  if(p.frames > 1) {
+    r << "  temporal incoherence (simplified change / true change, 40 steps of 0.5 deg):";
+    const char* names[4] = {"picking", "picking+remedy", "mapping", "mapping+remedy"};
+    for(int v = 0; v < 4; ++v)
+      if(sum.incoherence[v] >= 0) r << " " << names[v] << " " << sum.incoherence[v];
+    r << "\n";
+  }
+  r << "  checks (closed loops of mesh edges, picked edges on the fine silhouette): "
+    << (sum.consistent ? "passed" : "FAILED: " + sum.problems) << "\n";
+  r << "  files:";
+  for(const std::string& f : sum.files) r << " " << f;
+  r << "\n";
+  sum.report = r.str();
+  return sum;
+}
+
+} // namespace sil_detail
+
 Command_spec silhouette_spec()
 {
   Command_spec s;
