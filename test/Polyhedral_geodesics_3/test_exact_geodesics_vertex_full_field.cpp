@@ -32,24 +32,6 @@ typedef PG::Exact_geodesic_distances_3<Mesh> Geodesics;
 typedef Geodesics::Face_location Face_location;
 using MDCS_test::Vec3;
 
-struct Field_source
-{
-  bool at_vertex;
-  vertex_descriptor v;
-  Face_location loc;
-};
-Field_source field_source_at(vertex_descriptor v) { return Field_source{true, v, Face_location()}; }
-Field_source field_source_at(const Face_location& loc) { return Field_source{false, vertex_descriptor(), loc}; }
-
-template <class G>
-void add_field_sources(G& g, const std::vector<Field_source>& sources)
-{
-  for(const Field_source& s : sources) {
-    if(s.at_vertex) g.add_source(s.v);
-    else g.add_source(s.loc);
-  }
-}
-
 // A path node as a point, and the faces it lies on.
 struct Node_recorder
 {
@@ -174,7 +156,7 @@ void check_path(Geodesics& g, Geodesics& w, const Mesh& m, const Face_location& 
 }
 
 // Runs both full fields with the same sources and options and compares them.
-void compare_full_fields(const Mesh& m, const std::vector<Field_source>& sources, const std::string& what,
+void compare_full_fields(const Mesh& m, const std::vector<Source>& sources, const std::string& what,
                          std::size_t n_points, std::size_t n_paths, double limit = -1,
                          const std::vector<vertex_descriptor>& stop_targets = {})
 {
@@ -185,10 +167,10 @@ void compare_full_fields(const Mesh& m, const std::vector<Field_source>& sources
   for(Geodesics* x : {&g, &w}) {
     if(limit >= 0) x->set_distance_limit(limit);
     if(!stop_targets.empty()) x->set_stop_targets(stop_targets);
-    add_field_sources(*x, sources);
+    add_sources(*x, sources);
   }
   std::vector<Vec3> source_points;
-  for(const Field_source& s : sources)
+  for(const Source& s : sources)
     source_points.push_back(s.at_vertex ? MDCS_test::vertex_vec3(m, s.v)
                                         : MDCS_test::location_point(m, s.loc.first, s.loc.second));
   const double diag = MDCS_test::bbox_diagonal(m), floor_value = tolerance * diag;
@@ -226,7 +208,7 @@ void compare_full_fields(const Mesh& m, const std::vector<Field_source>& sources
       (void)p;
       Geodesics single(m);
       single.set_vertex_oriented_propagation(false);
-      add_field_sources(single, {sources[a.second]});
+      add_sources(single, {sources[a.second]});
       if(!(MDCS_test::relative_difference(single.distance(loc), a.first, floor_value) <= 1e-9)) {
         ++r.bad_source;
         r.note("point " + std::to_string(k) + ": nearest source " + std::to_string(a.second) + " vs " +
@@ -264,10 +246,10 @@ TEST_CASE("vertex-oriented full field: equal to the window propagation on a curv
           "[geodesics][exact][vertex_oriented][full_field]")
 {
   const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.2, 5));
-  compare_full_fields(m, {field_source_at(vertex_at(m, 0))}, "bumpy sphere, one vertex source", 60, 20);
-  compare_full_fields(m, {field_source_at(Face_location(face_at(m, 11), {{0.2, 0.3, 0.5}})), field_source_at(vertex_at(m, 100))},
+  compare_full_fields(m, {at(vertex_at(m, 0))}, "bumpy sphere, one vertex source", 60, 20);
+  compare_full_fields(m, {at(Face_location(face_at(m, 11), {{0.2, 0.3, 0.5}})), at(vertex_at(m, 100))},
                       "bumpy sphere, a face source and a vertex source", 60, 20);
-  compare_full_fields(m, {field_source_at(Face_location(face_at(m, 40), {{0.4, 0.6, 0.0}}))}, "bumpy sphere, a source on an edge",
+  compare_full_fields(m, {at(Face_location(face_at(m, 40), {{0.4, 0.6, 0.0}}))}, "bumpy sphere, a source on an edge",
                       40, 10);
 }
 
@@ -275,17 +257,17 @@ TEST_CASE("vertex-oriented full field: flat mesh with a hole and a height field"
           "[geodesics][exact][vertex_oriented][full_field]")
 {
   const Mesh hole = make_mesh(MDCS_test::square_with_hole<Point_3>(14, 4, 9, 5, 8));
-  compare_full_fields(hole, {field_source_at(vertex_at(hole, 3))}, "square with a hole", 60, 20);
+  compare_full_fields(hole, {at(vertex_at(hole, 3))}, "square with a hole", 60, 20);
   const Mesh hf = make_mesh(MDCS_test::height_field_grid<Point_3>(16, 0.15, 3));
-  compare_full_fields(hf, {field_source_at(vertex_at(hf, 7)), field_source_at(Face_location(face_at(hf, 300), {{0.1, 0.1, 0.8}}))},
+  compare_full_fields(hf, {at(vertex_at(hf, 7)), at(Face_location(face_at(hf, 300), {{0.1, 0.1, 0.8}}))},
                       "height field, two sources", 60, 20);
 }
 
 TEST_CASE("vertex-oriented full field: distance limit and stop targets", "[geodesics][exact][vertex_oriented][full_field]")
 {
   const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.2, 7));
-  compare_full_fields(m, {field_source_at(vertex_at(m, 5))}, "bumpy sphere, limit 0.8", 60, 15, 0.8);
-  compare_full_fields(m, {field_source_at(vertex_at(m, 5))}, "bumpy sphere, stop targets", 60, 15, -1,
+  compare_full_fields(m, {at(vertex_at(m, 5))}, "bumpy sphere, limit 0.8", 60, 15, 0.8);
+  compare_full_fields(m, {at(vertex_at(m, 5))}, "bumpy sphere, stop targets", 60, 15, -1,
                       {vertex_at(m, 200), vertex_at(m, 321)});
 }
 
@@ -296,5 +278,5 @@ TEST_CASE("vertex-oriented full field: a CGAL demo mesh", "[geodesics][exact][ve
     WARN("CGAL's demo meshes not found: skipped");
     return;
   }
-  compare_full_fields(m, {field_source_at(vertex_at(m, 0)), field_source_at(vertex_at(m, num_vertices(m) / 2))}, "elephant, two sources", 60, 20);
+  compare_full_fields(m, {at(vertex_at(m, 0)), at(vertex_at(m, num_vertices(m) / 2))}, "elephant, two sources", 60, 20);
 }

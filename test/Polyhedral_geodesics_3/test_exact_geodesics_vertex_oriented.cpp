@@ -36,22 +36,6 @@ using MDCS_test::Vec3;
 
 using MDCS_test::tolerance;
 
-struct Source
-{
-  bool at_vertex;
-  vertex_descriptor v;
-  Face_location loc;
-};
-
-template <class G>
-void add_sources(G& g, const std::vector<Source>& sources)
-{
-  for(const Source& s : sources) {
-    if(s.at_vertex) g.add_source(s.v);
-    else g.add_source(s.loc);
-  }
-}
-
 // Runs the vertex-oriented schedule and the window propagation (full field) from the same sources and
 // compares the vertex distances (relative 1e-12, absolute floor 1e-12 of the diagonal), the unreachable
 // vertices, and the nearest sources where the sources are not tied. Returns the vertex-oriented distances.
@@ -110,8 +94,6 @@ void check_flat(const Mesh& m, const std::vector<Source>& sources, const std::ve
   CHECK(cmp.ok(tolerance));
 }
 
-Source at(vertex_descriptor v) { return Source{true, v, Face_location()}; }
-Source at(const Face_location& loc) { return Source{false, vertex_descriptor(), loc}; }
 
 } // namespace
 

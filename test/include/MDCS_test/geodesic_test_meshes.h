@@ -10,6 +10,7 @@
 #include <MDCS_test/mesh_generators.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedral_geodesics_3/Exact_geodesic_distances_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/squared_distance_3.h>
@@ -62,6 +63,27 @@ inline Mesh unit_square_quad()
              c = quad.add_vertex(Point_3(1, 1, 0)), d = quad.add_vertex(Point_3(0, 1, 0));
   quad.add_face(a, b, c, d);
   return quad;
+}
+
+// A source at a vertex or at a surface point, and adding a list of them to any geodesics class.
+struct Source
+{
+  bool at_vertex;
+  vertex_descriptor v;
+  CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3<Mesh>::Face_location loc;
+};
+inline Source at(vertex_descriptor v) { return Source{true, v, {}}; }
+inline Source at(const CGAL::Polyhedral_geodesics_3::Exact_geodesic_distances_3<Mesh>::Face_location& loc)
+{
+  return Source{false, vertex_descriptor(), loc};
+}
+template <class G>
+void add_sources(G& g, const std::vector<Source>& sources)
+{
+  for(const Source& s : sources) {
+    if(s.at_vertex) g.add_source(s.v);
+    else g.add_source(s.loc);
+  }
 }
 
 } // namespace Epick_surface_mesh
