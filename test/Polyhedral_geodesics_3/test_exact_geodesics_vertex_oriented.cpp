@@ -45,6 +45,7 @@ std::vector<double> check_against_windows(const Mesh& m, const std::vector<Sourc
 {
   INFO(what);
   Geodesics fast(m, PG::Geodesic_memory_mode::distances_only), full(m);
+  full.set_vertex_oriented_propagation(false); // the window propagation: the independent oracle
   add_sources(fast, sources);
   add_sources(full, sources);
   const std::vector<double> a = MDCS_test::vertex_distances(full, m), b = MDCS_test::vertex_distances(fast, m);
@@ -272,14 +273,18 @@ TEST_CASE("vertex-oriented exact geodesics: which runs use it", "[geodesics][exa
   CHECK(g.statistics().peak_memory_bytes > 0);
   CHECK(g.statistics().stored_windows == 0);
 
-  g.set_distance_limit(0.5); // the early stop needs the window order
+  g.set_distance_limit(0.5); // limits and stop targets run on the vertex-oriented schedule too
   const double d_limit = g.distance(t);
-  CHECK_FALSE(g.used_vertex_oriented_propagation());
+  CHECK(g.used_vertex_oriented_propagation());
   CHECK((d_limit == d_fast || (d_fast > 0.5 && std::isinf(d_limit))));
+  g.set_vertex_oriented_full_field(false); // ... or on the window order, when asked
+  CHECK((g.distance(t) == d_limit || std::abs(g.distance(t) - d_limit) <= 1e-14 * d_limit));
+  CHECK_FALSE(g.used_vertex_oriented_propagation());
+  g.set_vertex_oriented_full_field(true);
   g.clear_distance_limit();
   g.set_stop_targets(std::vector<vertex_descriptor>{t});
   CHECK(std::abs(g.distance(t) - d_fast) <= 1e-14 * d_fast);
-  CHECK_FALSE(g.used_vertex_oriented_propagation());
+  CHECK(g.used_vertex_oriented_propagation());
   g.clear_stop_targets();
   g.set_vertex_oriented_propagation(false);
   CHECK_FALSE(g.vertex_oriented_propagation());
@@ -289,6 +294,9 @@ TEST_CASE("vertex-oriented exact geodesics: which runs use it", "[geodesics][exa
   CHECK(g.distance(t) == d_fast);
   CHECK(g.used_vertex_oriented_propagation());
   g.set_memory_mode(PG::Geodesic_memory_mode::full_field);
+  CHECK(g.distance(t) == d_fast); // the same schedule, keeping its records
+  CHECK(g.used_vertex_oriented_propagation());
+  g.set_vertex_oriented_full_field(false);
   CHECK(std::abs(g.distance(t) - d_fast) <= 1e-14 * d_fast);
   CHECK_FALSE(g.used_vertex_oriented_propagation());
 }

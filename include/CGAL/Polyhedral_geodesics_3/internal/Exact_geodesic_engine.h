@@ -4,14 +4,15 @@
 // The engine behind Exact_geodesic_distances_3 (and Merged_window_geodesic_distances_3): it picks, per run, one of
 // the two exact propagations.
 //
-// - Vertex-oriented (vertex_oriented_propagation.h): distances_only runs; with set_vertex_oriented_full_field(true)
-//   every exact run, in both memory modes. In full_field mode it records how each vertex got its distance, and paths
-//   and point queries run from that record (vertex_oriented_paths.h); distance limits and stop targets are its own.
+// - Vertex-oriented (vertex_oriented_propagation.h): every exact run, in both memory modes, unless
+//   set_vertex_oriented_full_field(false) keeps it to distances_only runs without a limit or stop targets. In
+//   full_field mode it records how each vertex got its distance, and paths and point queries run from that record
+//   (vertex_oriented_paths.h); distance limits and stop targets are its own.
 // - Window-ordered (exact_window_propagation.h, the thesis's propagation with side lobes, which keeps the lower
 //   envelope of every edge): when set_vertex_oriented_allowed(false) asks for it (the independent oracle of the
 //   tests), on meshes with a zero-area face (where the vertex-oriented schedule missed paths along the line of such
-//   faces), and for interval merging with the full field, a limit or stop targets (Merged_window_geodesic_distances_3
-//   keeps its earlier behaviour there).
+//   faces), for full-field runs on meshes with a needle face (see the constructor), and for interval merging with
+//   the full field, a limit or stop targets (Merged_window_geodesic_distances_3 keeps its earlier behaviour there).
 //
 // The facade calls clear(), then the option setters, then adds the sources: the choice is made at the first
 // source, when every option is known. Both engines are built on first use only.
@@ -53,6 +54,20 @@ public:
     // run through it in the same direction (a non-orientable gluing), would be a border to it. The window
     // propagation crosses such edges into every other face (geodesic_window.h).
     has_special_edges_ = mesh_.has_special_edges();
+    // Paths from the vertex-oriented records walk a straight line across faces, unfolding one face at a time;
+    // through a needle (height below 1e-7 of an edge) that unfolding loses digits: on a grid with a column of
+    // needles 1e-10 wide a path came out 1.8e-9 (relative) longer than its distance. The windows of the window
+    // propagation keep each edge's pseudo-source instead, so full-field runs on such meshes use them.
+    has_needle_face_ = has_needle_face(mesh_, FT(1e-7));
+  }
+
+  // Whether a face of `mesh` is lower than `ratio` times one of its edges.
+  static bool has_needle_face(const Mesh& mesh, const FT& ratio)
+  {
+    for(const Geodesic_halfedge<FT>& r : mesh.he)
+      if(r.opposite.y < ratio * r.length)
+        return true;
+    return false;
   }
 
   // Whether a face of `mesh` has zero area (the vertex-oriented schedule is then never used on it).
@@ -83,9 +98,9 @@ public:
   // false: every run uses the window-ordered engine (for comparisons and its statistics).
   void set_vertex_oriented_allowed(bool allowed) { vertex_oriented_allowed_ = allowed; }
   bool vertex_oriented_allowed() const { return vertex_oriented_allowed_; }
-  // true: the full field, distance limits and stop targets run on the vertex-oriented schedule too (paths and point
-  // queries from its Parent records, vertex_oriented_paths.h). Off by default until the whole test suite has been
-  // moved to it; the window propagation serves those runs meanwhile.
+  // true (the default): the full field, distance limits and stop targets run on the vertex-oriented schedule too
+  // (paths and point queries from its Parent records, vertex_oriented_paths.h). false: the window propagation
+  // serves those runs (the tests' oracle and its statistics).
   void set_vertex_oriented_full_field(bool enable) { vertex_oriented_full_field_ = enable; }
   bool vertex_oriented_full_field() const { return vertex_oriented_full_field_; }
   // The engine of the last run (or of the run being prepared).
@@ -168,7 +183,8 @@ private:
     const bool merging = merge_tolerance_ > FT(0);
     const bool needs_records = keep_windows_ || has_limit_ || !stop_targets_.empty();
     use_vertex_engine_ = vertex_oriented_allowed_ && !has_zero_area_face_ && !has_special_edges_ &&
-                         !(needs_records && (merging || !vertex_oriented_full_field_));
+                         !(needs_records && (merging || !vertex_oriented_full_field_)) &&
+                         !(keep_windows_ && has_needle_face_);
     if(use_vertex_engine_) {
       Vertex_engine& v = vertex_engine();
       v.set_record_parents(keep_windows_);
@@ -214,8 +230,9 @@ private:
   std::unique_ptr<Vertex_engine> vertex_;
   std::unique_ptr<Vertex_oriented_paths<FT>> paths_;
   bool keep_windows_ = true, has_limit_ = false, chosen_ = false, use_vertex_engine_ = false;
-  bool vertex_oriented_allowed_ = true, vertex_oriented_full_field_ = false;
+  bool vertex_oriented_allowed_ = true, vertex_oriented_full_field_ = true;
   bool has_zero_area_face_ = false;
+  bool has_needle_face_ = false;
   bool has_special_edges_ = false;
   FT limit_ = FT(0), merge_tolerance_ = FT(0);
   std::vector<Index> stop_targets_;

@@ -14,6 +14,7 @@
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/unit_roundoff.h>
 
 #include <algorithm>
 #include <array>
@@ -73,10 +74,7 @@ public:
   explicit Flat_exact_field(const Mesh& mesh) : mesh_(mesh), he_(mesh.he)
   {
     unreached_ = FT(std::numeric_limits<double>::max() / 16);
-    if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
-      epsilon_ = FT(std::numeric_limits<FT>::epsilon());
-    else
-      epsilon_ = FT(0);
+    epsilon_ = unit_roundoff<FT>();
     improvement_ = FT(16) * epsilon_;
     build_vertex_edges();
     vertex_is_pseudo_source_.assign(mesh_.number_of_vertices, 0);

@@ -40,6 +40,7 @@
 #include <CGAL/Polyhedral_geodesics_3/internal/Quaternary_heap.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_batch.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_window_lists.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/unit_roundoff.h>
 
 #include <algorithm>
 #include <array>
@@ -96,10 +97,7 @@ public:
   explicit Vertex_oriented_window_propagation(const Mesh& mesh) : mesh_(mesh), batch_(mesh)
   {
     unreached_ = FT(std::numeric_limits<double>::max() / 16);
-    if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
-      relative_tolerance_ = FT(64) * FT(std::numeric_limits<FT>::epsilon());
-    else
-      relative_tolerance_ = FT(0);
+    relative_tolerance_ = FT(64) * unit_roundoff<FT>();
     const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
     build_vertex_star(mesh_, star_begin_, star_);
     // Pseudo-sources: saddle and boundary vertices, and the vertices of zero-length edges (their windows are
@@ -340,6 +338,7 @@ public:
   }
 
   std::size_t lists_processed() const { return lists_processed_; }
+
 
 private:
   enum State : std::uint8_t { OUTSIDE = 0, FRONT = 1, INSIDE = 2 };
@@ -614,10 +613,12 @@ private:
       // Only values up to the front (or the limit) are final; the others are reported as unreachable, never as a
       // wrong value (distance_lower_bound() then says that they lie beyond the bound).
       const FT bound = final_bound();
+      bool cut_any = false;
       const auto cut = [&](Vertex_record& r) {
         if(r.dist > bound) {
           r.dist = unreached_;
           r.source = -1;
+          cut_any = true;
         }
       };
       if(reuse_) // the others still have no value
@@ -626,7 +627,37 @@ private:
       else
         for(Vertex_record& r : vertices_)
           cut(r);
+      // A limit stopped the run if it cut a value, or if a vertex within it has a neighbour that no window reached
+      // (windows wholly beyond the limit are never created): statistics().stopped_early says so, as the window
+      // engine's does. (stopped_early_ itself stays false: it means "stopped at the front", see final_bound().)
+      if(has_limit_ && !stopped_early_)
+        stats_.stopped_early = cut_any || limit_left_a_neighbour_unreached();
     }
+  }
+
+  bool limit_left_a_neighbour_unreached() const
+  {
+    const auto check = [&](std::size_t v) {
+      if(!(vertices_[v].dist < unreached_))
+        return false;
+      for(Index k = star_begin_[v]; k < star_begin_[v + 1]; ++k) {
+        const Index h = star_[std::size_t(k)];
+        if(!(vertices_[std::size_t(mesh_.target(h))].dist < unreached_) ||
+           !(vertices_[std::size_t(mesh_.source(Mesh::prev(h)))].dist < unreached_))
+          return true;
+      }
+      return false;
+    };
+    if(reuse_) {
+      for(Index v : touched_vertices_)
+        if(check(std::size_t(v)))
+          return true;
+    } else {
+      for(std::size_t v = 0; v < vertices_.size(); ++v)
+        if(check(v))
+          return true;
+    }
+    return false;
   }
 
   // ------------------------------------------------------------------------------------------------

@@ -13,6 +13,7 @@
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_engine_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_window.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Window_store.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/unit_roundoff.h>
 
 #include <algorithm>
 #include <array>
@@ -45,10 +46,7 @@ public:
     }
     // The sentinel of "no distance yet": large, but far from overflowing when a few lengths are added.
     unreached_ = FT(std::numeric_limits<double>::max() / 16);
-    if(std::numeric_limits<FT>::is_specialized && std::numeric_limits<FT>::epsilon() > FT(0))
-      relative_tolerance_ = FT(64) * FT(std::numeric_limits<FT>::epsilon());
-    else
-      relative_tolerance_ = FT(0);
+    relative_tolerance_ = FT(64) * unit_roundoff<FT>();
   }
 
 public:
