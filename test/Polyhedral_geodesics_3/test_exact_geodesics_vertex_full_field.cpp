@@ -280,3 +280,72 @@ TEST_CASE("vertex-oriented full field: a CGAL demo mesh", "[geodesics][exact][ve
   }
   compare_full_fields(m, {at(vertex_at(m, 0)), at(vertex_at(m, num_vertices(m) / 2))}, "elephant, two sources", 60, 20);
 }
+
+// Point queries on the records run a small propagation each; after many of them the engine builds the window
+// field once and answers from it (Exact_geodesic_engine::distance_at). The answers must not change in kind: equal
+// to the oracle before and after the switch, paths to points as long as their distances, and the vertex data
+// (which stays the records') unchanged bit for bit.
+TEST_CASE("vertex-oriented full field: many point queries switch to the window field with the same answers",
+          "[geodesics][exact][vertex_oriented][full_field]")
+{
+  const Mesh m = make_mesh(MDCS_test::bumpy_sphere<Point_3>(3, 0.2, 9));
+  const std::vector<Source> sources = {at(vertex_at(m, 0)), at(Face_location(face_at(m, 57), {{0.25, 0.25, 0.5}}))};
+  Geodesics g(m), w(m);
+  w.set_vertex_oriented_propagation(false);
+  add_sources(g, sources);
+  add_sources(w, sources);
+  const std::vector<double> before = MDCS_test::vertex_distances(g, m);
+  const double diag = MDCS_test::bbox_diagonal(m), floor_value = tolerance * diag;
+  const auto locations = MDCS_test::random_face_locations(m, 5000, 23u);
+  std::size_t asked = 0, bad = 0;
+  double worst = 0;
+  for(const Face_location& loc : locations) {
+    if(g.point_queries_from_window_field())
+      break;
+    ++asked;
+    if(!same(g.distance(loc), w.distance(loc), floor_value, worst)) ++bad;
+  }
+  INFO(asked << " point queries before the switch, worst relative difference " << worst);
+  REQUIRE(g.point_queries_from_window_field());
+  CHECK(asked > 20); // the records answered a fair number first
+  CHECK(bad == 0);
+  std::size_t after = 0, bad_after = 0, bad_path = 0;
+  for(std::size_t i = asked; i < locations.size() && after < 300; ++i, ++after) {
+    const Face_location& loc = locations[i];
+    const auto a = g.nearest_source(loc), b = w.nearest_source(loc);
+    if(!same(a.first, b.first, floor_value, worst)) ++bad_after;
+    if(after < 20) {
+      std::vector<Point_3> pts;
+      g.shortest_path_points(loc, std::back_inserter(pts));
+      if(pts.empty() || !(MDCS_test::relative_difference(MDCS_test::path_length(pts), a.first, floor_value) <= 1e-10))
+        ++bad_path;
+    }
+  }
+  CHECK(bad_after == 0);
+  CHECK(bad_path == 0);
+  CHECK(g.used_vertex_oriented_propagation());
+  CHECK(MDCS_test::vertex_distances(g, m) == before);
+  // a new run starts on the records again
+  g.add_source(vertex_at(m, 200));
+  w.add_source(vertex_at(m, 200));
+  CHECK(same(g.distance(locations[0]), w.distance(locations[0]), floor_value, worst));
+  CHECK_FALSE(g.point_queries_from_window_field());
+}
+
+// Through a needle (a face far lower than its edges) a path walked on the records loses digits, so full-field runs
+// on such meshes use the window propagation; distances_only runs keep the vertex-oriented schedule.
+TEST_CASE("vertex-oriented full field: not on meshes with needle faces", "[geodesics][exact][vertex_oriented][full_field]")
+{
+  for(const double gap : {1e-10, 1e-6}) {
+    INFO("needle column of width " << gap);
+    const Mesh m = make_mesh(MDCS_test::grid_with_needle_column<Point_3>(8, 0.43, gap));
+    Geodesics full(m), light(m, PG::Geodesic_memory_mode::distances_only);
+    full.add_source(vertex_at(m, 0));
+    light.add_source(vertex_at(m, 0));
+    full.compute();
+    light.compute();
+    CHECK(light.used_vertex_oriented_propagation());
+    // 1e-10 across an edge of 0.125: a needle; 1e-6: 8e-6 of the edge, above the 1e-7 threshold
+    CHECK(full.used_vertex_oriented_propagation() == (gap > 1e-7));
+  }
+}

@@ -56,7 +56,19 @@ public:
   explicit Vertex_oriented_paths(const Mesh& mesh) : mesh_(mesh) {}
 
   // Forgets the last point query (the forward run changed).
-  void invalidate() { query_valid_ = false; }
+  void invalidate()
+  {
+    query_valid_ = false;
+    query_windows_ = 0;
+  }
+
+  // Windows created by the point queries since the last invalidate(): what point queries have cost so far.
+  std::size_t query_windows_since_run() const { return query_windows_; }
+  // Whether the last point query was at (f, b) (its answer is kept).
+  bool has_query_at(Index f, const std::array<FT, 3>& b) const
+  {
+    return query_valid_ && query_.face == f && query_.barycentric == b;
+  }
 
   Point_distance distance_at(const Engine& forward, Index f, const std::array<FT, 3>& b)
   {
@@ -165,7 +177,7 @@ private:
   // The point query at (f, b), computed once per point (a path after a distance query reuses it).
   const Query& point_query(const Engine& forward, Index f, const std::array<FT, 3>& b)
   {
-    if(query_valid_ && query_.face == f && query_.barycentric == b)
+    if(has_query_at(f, b))
       return query_;
     query_ = Query();
     query_.face = f;
@@ -173,6 +185,7 @@ private:
     if(!backward_) {
       backward_.reset(new Engine(mesh_));
       backward_->set_record_parents(true);
+      backward_->set_reuse_between_runs(true); // each query reaches a band of the mesh: reset only that
     }
     typename Engine::Backward_query bq;
     bq.forward = &forward;
@@ -197,6 +210,7 @@ private:
     MDCS::No_progress quiet;
     backward_->run(quiet);
     backward_->set_backward_query(nullptr);
+    query_windows_ += backward_->statistics().windows_created;
     query_valid_ = true;
     if(!(bq.best < forward.unreached()) || bq.best > forward.final_bound())
       return query_;
@@ -413,6 +427,7 @@ private:
   std::unique_ptr<Engine> backward_;
   Query query_;
   bool query_valid_ = false;
+  std::size_t query_windows_ = 0;
 };
 
 } // namespace internal
