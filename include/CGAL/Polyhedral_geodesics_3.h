@@ -3,7 +3,8 @@
 //
 // Convenience header of the package Polyhedral_geodesics_3: geodesic distances and shortest paths on
 // triangle meshes, exact (window propagation) and approximate (interval merging, flat-exact, fast
-// marching, Dijkstra), and the error metric that compares them.
+// marching, Dijkstra), the error metric that compares them, locating points and rays on the surface, and
+// iso-distance curves.
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_H
@@ -15,5 +16,7 @@
 #include <CGAL/Polyhedral_geodesics_3/Fast_marching_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/Dijkstra_geodesic_distances_3.h>
 #include <CGAL/Polyhedral_geodesics_3/geodesic_distance_error.h>
+#include <CGAL/Polyhedral_geodesics_3/Surface_point_locator_3.h>
+#include <CGAL/Polyhedral_geodesics_3/iso_distance_curves.h>
 
 #endif // CGAL_POLYHEDRAL_GEODESICS_3_H

@@ -15,6 +15,9 @@ with inaccurate duals therefore yields `optimal_uncertified`, never a wrong "cer
 \cgalHasModel `CGAL::Minimum_weight_triangulation_2::CLP_linear_program_solver` (dual simplex; the default)
 \cgalHasModel `CGAL::Minimum_weight_triangulation_2::GLPK_linear_program_solver` (primal simplex with presolve;
 with `exact = true`, re-solved by `glp_exact` from the floating-point basis)
+\cgalHasModel `CGAL::Minimum_weight_triangulation_2::QP_solver_linear_program_solver` (CGAL's exact `QP_solver`:
+the exact optimum, primal values and duals of the program's double data, rounded once; no external library;
+small programs)
 \cgalHasModel `CGAL::Minimum_weight_triangulation_2::Mixed_integer_program_linear_program_solver` (any model of
 CGAL's `MixedIntegerProgramTraits`, e.g. `CGAL::GLPK_mixed_integer_program_traits` or
 `CGAL::SCIP_mixed_integer_program_traits`; primal values only, so its optima are validated but not certified;
@@ -23,7 +26,7 @@ its `solve_binary()` can resolve fractional optima)
 class LinearProgramSolver
 {
 public:
-  /// A short name ("clp", "glpk", "exact"), copied into `Mwt_result::solver`.
+  /// A short name ("clp", "glpk", "exact", "qp-solver"), copied into `Mwt_result::solver`.
   const char* name() const;
 
   /// Solves `lp`. Never throws on an infeasible or unbounded program: reports it in the status.

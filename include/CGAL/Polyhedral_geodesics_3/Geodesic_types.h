@@ -74,6 +74,9 @@ public:
   /// adds a source at a vertex or at a surface point; returns its index (0, 1, ...)
   std::size_t add_source(vertex_descriptor v);
   std::size_t add_source(const Face_location& location);
+  /// removes source `i`, keeping the others (later sources move down one index); the results are those of a
+  /// new object given the remaining sources in the same order
+  void remove_source(std::size_t i);
   void clear_sources();
   /// stops at geodesic distance `limit`; farther points report `+infinity`
   void set_distance_limit(FT limit);

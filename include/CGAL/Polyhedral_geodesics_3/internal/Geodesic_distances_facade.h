@@ -130,6 +130,19 @@ public:
     return sources_.size() - 1;
   }
 
+  /// Removes the source of index `i` (as returned by `add_source()`) and keeps the others; the sources added
+  /// after it move down one index (as in `std::vector::erase`). The next query runs again from the remaining
+  /// sources, with the same results as a new object given them in the same order. Throws `std::out_of_range`
+  /// if there is no source `i`.
+  void remove_source(std::size_t i)
+  {
+    if(i >= sources_.size())
+      throw std::out_of_range("CGAL::Polyhedral_geodesics_3::remove_source: no source " + std::to_string(i) + " (" +
+                              std::to_string(sources_.size()) + " sources)");
+    sources_.erase(sources_.begin() + std::ptrdiff_t(i));
+    invalidate();
+  }
+
   /// Removes every source.
   void clear_sources()
   {
