@@ -6,13 +6,18 @@
 //   - file:    the mesh as loaded (Loop subdivision appends the new vertices and faces at the end);
 //   - hilbert: the same mesh copied with its vertices in Hilbert order (CGAL::hilbert_sort) and its faces sorted
 //              by their smallest new vertex index: the locality a spatial order gives, measured outside the
-//              library (the distances must be identical up to rounding).
+//              library (the distances must be identical up to rounding);
+//   - field:   the file order in full_field mode (the window propagation, which keeps the lower envelope of every
+//              edge): its `stored` windows are the size of the exact field, what any envelope algorithm keeps.
 // Timed: constructing the class on a prepared Geodesic_surface_3 (built once per variant, not timed), adding the
 // source (the first vertex of the file order) and compute(). After the table: the growth exponents (least-squares
 // slope of log(time) against log(vertices)) of each variant.
 //
+// Meshes: armadillo (26k vertices) and bunny00 (38k) of CGAL's demo data, diplodocus (24k, ../shared/data, with
+// --extra-dir), and their Loop subdivisions x1, x2, x3 (named like armadillo-loop3: 1.66M vertices).
+//
 // Usage: bench_exact_geodesics_scale [--meshes a,b] [--runs N] [--csv FILE] [--mesh-dir DIR] [--extra-dir DIR]
-//        [--variants file,hilbert] [--list]
+//        [--variants file,hilbert,field] [--list]
 #include <geodesic_bench_common.h>
 
 #include <CGAL/Polyhedral_geodesics_3.h>
@@ -141,19 +146,20 @@ int main(int argc, char** argv)
     if(a == "--variants" && i + 1 < argc) variants = split(argv[++i], ',');
     else if(!o.parse(argc, argv, i)) {
       std::cerr << "usage: bench_exact_geodesics_scale [--meshes a,b] [--runs N] [--csv FILE] [--mesh-dir DIR] "
-                   "[--extra-dir DIR] [--variants file,hilbert] [--list]\n";
+                   "[--extra-dir DIR] [--variants file,hilbert,field] [--list]\n";
       return 2;
     }
   }
-  const std::vector<Mesh_spec> builtin = {
-    {"armadillo", o.in_mesh_dir("armadillo.off"), 0},
-    {"bunny00", o.in_mesh_dir("bunny00.off"), 0},
-    {"armadillo-loop1", o.in_mesh_dir("armadillo.off"), 1},
-    {"bunny00-loop1", o.in_mesh_dir("bunny00.off"), 1},
-    {"armadillo-loop2", o.in_mesh_dir("armadillo.off"), 2},
-    {"bunny00-loop2", o.in_mesh_dir("bunny00.off"), 2},
-    {"armadillo-loop3", o.in_mesh_dir("armadillo.off"), 3},
-    {"bunny00-loop3", o.in_mesh_dir("bunny00.off"), 3}};
+  std::vector<Mesh_spec> builtin;
+  // The ladders: each base mesh and its Loop subdivisions x1..x3 (4x the vertices per step). diplodocus (24k
+  // vertices) is in ../shared/data: its ladder is offered when --extra-dir holds it.
+  std::vector<std::pair<std::string, std::string>> bases = {{"armadillo", o.in_mesh_dir("armadillo.off")},
+                                                            {"bunny00", o.in_mesh_dir("bunny00.off")}};
+  if(!o.extra_dir.empty())
+    bases.push_back({"diplodocus", (std::filesystem::path(o.extra_dir) / "diplodocus.off").string()});
+  for(int steps = 0; steps <= 3; ++steps)
+    for(const auto& b : bases)
+      builtin.push_back({steps ? b.first + "-loop" + std::to_string(steps) : b.first, b.second, steps});
   std::vector<Mesh_spec> specs;
   if(!select_meshes(builtin, o, specs)) return 2;
   if(o.list_only) {
@@ -198,7 +204,9 @@ int main(int argc, char** argv)
       for(std::size_t k = 0; k < variants.size(); ++k) {
         const std::vector<std::size_t>* map = maps[k].empty() ? nullptr : &maps[k];
         const Vertex source(Mesh::size_type(map ? (*map)[0] : 0));
-        last[k] = run_once(surfaces[k], source, map, variants[k] == "field" ? PG::Geodesic_memory_mode::full_field : PG::Geodesic_memory_mode::distances_only);
+        const auto mode = variants[k] == "field" ? PG::Geodesic_memory_mode::full_field
+                                                 : PG::Geodesic_memory_mode::distances_only;
+        last[k] = run_once(surfaces[k], source, map, mode);
         cpu[k].push_back(last[k].cpu);
         wall[k].push_back(last[k].wall);
       }
