@@ -13,6 +13,10 @@
 //   faces), and for interval merging with the full field, a limit or stop targets (Merged_window_geodesic_distances_3
 //   keeps its earlier behaviour there).
 //
+// - The parallel schedule of the vertex-oriented engine (vertex_oriented_parallel.h): with set_parallel(true, n),
+//   for the vertex-oriented runs without stop targets and without Parent records (distances_only, with or without a
+//   limit); the other runs stay sequential.
+//
 // The facade calls clear(), then the option setters, then adds the sources: the choice is made at the first
 // source, when every option is known. Both engines are built on first use only.
 
@@ -22,6 +26,7 @@
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/exact_window_propagation.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_parallel.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_paths.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_propagation.h>
 
@@ -88,6 +93,23 @@ public:
   // moved to it; the window propagation serves those runs meanwhile.
   void set_vertex_oriented_full_field(bool enable) { vertex_oriented_full_field_ = enable; }
   bool vertex_oriented_full_field() const { return vertex_oriented_full_field_; }
+  // The parallel schedule (vertex_oriented_parallel.h) on `threads` threads (the effective count, >= 1) for the runs
+  // it serves; false: the sequential schedule.
+  void set_parallel(bool parallel, std::size_t threads)
+  {
+    parallel_ = parallel;
+    threads_ = threads == 0 ? 1 : threads;
+  }
+  bool parallel() const { return parallel_; }
+  std::size_t threads() const { return threads_; }
+  // Rounds of the parallel schedule: set (> 0) before a run to change the lists per round (tests, benchmarks).
+  void set_parallel_lists_per_round(std::size_t n) { lists_per_round_ = n; }
+  // Measure the parallel runs (Vertex_oriented_parallel_profile, for the benchmark).
+  void set_parallel_profile(bool profile) { profile_ = profile; }
+  const Vertex_oriented_parallel_profile& parallel_profile() const { return parallel_profile_; }
+  // Whether the last run used the parallel schedule.
+  bool used_parallel_schedule() const { return used_parallel_; }
+
   // The engine of the last run (or of the run being prepared).
   bool uses_vertex_oriented_engine() const { return use_vertex_engine_; }
 
@@ -112,8 +134,19 @@ public:
     if(use_vertex_engine_) {
       if(paths_)
         paths_->invalidate();
-      vertex_engine().run(progress);
+      used_parallel_ = parallel_ && !keep_windows_ && stop_targets_.empty();
+      if(used_parallel_) {
+        Vertex_oriented_parallel_runner<FT> runner(vertex_engine(), threads_);
+        if(lists_per_round_ > 0)
+          runner.set_lists_per_round(lists_per_round_);
+        runner.set_profile(profile_);
+        runner.run(progress);
+        parallel_profile_ = runner.profile();
+      } else {
+        vertex_engine().run(progress);
+      }
     } else {
+      used_parallel_ = false;
       window_engine().run(progress);
     }
   }
@@ -217,6 +250,9 @@ private:
   bool vertex_oriented_allowed_ = true, vertex_oriented_full_field_ = false;
   bool has_zero_area_face_ = false;
   bool has_special_edges_ = false;
+  bool parallel_ = false, profile_ = false, used_parallel_ = false;
+  std::size_t threads_ = 1, lists_per_round_ = 0;
+  Vertex_oriented_parallel_profile parallel_profile_;
   FT limit_ = FT(0), merge_tolerance_ = FT(0);
   std::vector<Index> stop_targets_;
 };

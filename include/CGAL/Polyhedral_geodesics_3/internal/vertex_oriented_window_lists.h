@@ -116,6 +116,30 @@ public:
     }
   }
 
+  // take() for the parallel schedule (vertex_oriented_parallel.h): several lists are taken at the same time, so
+  // their chunks are not freed here but appended to `taken` (free_chunks() frees them afterwards, in a fixed order).
+  // Reads the chunks and writes head_[g] only: takes of distinct lists may run concurrently.
+  template <class Vector>
+  void take_deferred(Index g, Vector& out, std::vector<Index>& taken)
+  {
+    Index c = head_[std::size_t(g)];
+    head_[std::size_t(g)] = -1;
+    while(c >= 0) {
+      const Chunk& ch = chunk(c);
+      const int n = chunk_count_[std::size_t(c)];
+      for(int k = 0; k < n; ++k)
+        out.push_back(ch.w[k]);
+      taken.push_back(c);
+      c = chunk_next_[std::size_t(c)];
+    }
+  }
+
+  void free_chunks(const std::vector<Index>& taken)
+  {
+    for(Index c : taken)
+      free_chunk(c);
+  }
+
   // Asks the processor to load the windows of list g (a hint; nothing happens without GCC or Clang).
   void prefetch(Index g) const
   {
