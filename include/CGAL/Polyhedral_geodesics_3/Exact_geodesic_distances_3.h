@@ -161,6 +161,20 @@ public:
   /// Whether the last propagation used the parallel schedule (see `set_concurrency()`).
   bool used_parallel_propagation() const { return this->engine_const().used_parallel_schedule(); }
 
+  /// \cond SKIP_IN_MANUAL
+  // The parallel schedule's rounds (lists per round, default 256; tests and benchmarks) and its measurements.
+  void set_parallel_lists_per_round(std::size_t n)
+  {
+    this->engine().set_parallel_lists_per_round(n);
+    this->invalidate();
+  }
+  void set_parallel_profile(bool profile) { this->engine().set_parallel_profile(profile); }
+  const internal::Vertex_oriented_parallel_profile& parallel_profile() const
+  {
+    return this->engine_const().parallel_profile();
+  }
+  /// \endcond
+
   /// Whether the last propagation used the vertex-oriented schedule.
   bool used_vertex_oriented_propagation() const { return this->engine_const().uses_vertex_oriented_engine(); }
 };

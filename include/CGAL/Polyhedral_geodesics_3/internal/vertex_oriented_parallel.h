@@ -41,15 +41,22 @@
 #include <cstdint>
 #include <vector>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <time.h>
+#endif
+
 namespace CGAL {
 namespace Polyhedral_geodesics_3 {
 namespace internal {
 
-// What a parallel run measured (only with set_profile(true); the figures of the manual and the benchmark).
+// What a parallel run measured (only with set_profile(true); the figures of the manual and the benchmark). Times
+// are CPU times of the thread that ran the step (so that a loaded machine does not count the waits for a core),
+// except parallel_seconds, the wall time of the parallel steps.
 struct Vertex_oriented_parallel_profile
 {
   std::size_t rounds = 0, tasks = 0;
-  double settle_seconds = 0, merge_seconds = 0, parallel_seconds = 0; // wall time of the three steps
+  double settle_seconds = 0, merge_seconds = 0, parallel_seconds = 0; // the three steps
+  double merge_span_seconds = 0;           // the merge's longer stream (its time with two threads or more)
   double work_seconds = 0;                 // the tasks' time summed over every block (the parallel step's work)
   std::vector<double> thread_busy_seconds; // per thread that ran blocks: its time in blocks
   // For P = 1, 2, 4, 8, 16 threads: sum over rounds of max(work / P, longest block): a lower bound of the parallel
@@ -88,15 +95,19 @@ public:
   template <class Progress>
   void run(Progress& progress)
   {
-    CGAL_precondition(e_.query_ == nullptr && e_.stop_targets_.empty());
+    CGAL_precondition(e_.query_ == nullptr && e_.stop_targets_.empty() && !e_.reuse_);
     const char* stage = "geodesic propagation";
     if(!progress(stage, 0.0))
       throw MDCS::Operation_cancelled(stage);
     profile_data_ = Profile();
     std::size_t settled = 0, rounds = 0;
     do {
+      // the settled vertices (again after the safety net, which may have put some back into the queue)
+      inside_.assign(e_.vertices_.size(), 0);
+      for(std::size_t v = 0; v < e_.vertices_.size(); ++v)
+        inside_[v] = e_.vertices_[v].state == Engine::INSIDE ? 1 : 0;
       for(;;) {
-        const auto t0 = now();
+        const double t0 = profile_ ? now() : 0.0;
         settle(settled);
         if(e_.fifo_.empty() && tasks_expand_.empty())
           break; // the queue is empty
@@ -121,9 +132,22 @@ public:
 
 private:
   typedef typename Engine::Parent Parent;
-  typedef std::chrono::steady_clock Clock;
-  static Clock::time_point now() { return Clock::now(); }
-  static double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+  // CPU time of the calling thread (wall time where there is no such clock).
+  static double now()
+  {
+#if defined(CLOCK_THREAD_CPUTIME_ID)
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+#else
+    return wall();
+#endif
+  }
+  static double wall()
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  }
+  static double seconds(double a, double b) { return b - a; }
 
   // source: the nearest source of the path (an expansion's, read when the round started), or -2: the root's,
   // read when the lowering is applied (as the sequential schedule does).
@@ -140,21 +164,24 @@ private:
   };
 
   // What the tasks of one block produce, applied in the merge.
+  // The merge's streams of children: a list belongs to the stream of its halfedge (runs of 32 halfedges, dealt
+  // out in turn), a fixed number, whatever the number of threads.
+  static constexpr std::size_t child_streams = 8;
+  static std::size_t stream_of(Index g) { return (std::size_t(g) >> 5) % child_streams; }
+
   struct Block_output
   {
-    std::vector<std::size_t> task_end_lowerings, task_end_children; // per task: end of its part of the vectors
     std::vector<Lowering> lowerings;
-    std::vector<Child> children;
+    std::array<std::vector<Child>, child_streams> children; // per stream, in task order
     std::vector<Index> taken_chunks;
     std::size_t taken_windows = 0, propagated = 0, pruned = 0, merged = 0;
     double seconds = 0;
 
     void clear()
     {
-      task_end_lowerings.clear();
-      task_end_children.clear();
       lowerings.clear();
-      children.clear();
+      for(std::vector<Child>& c : children)
+        c.clear();
       taken_chunks.clear();
       taken_windows = propagated = pruned = merged = 0;
       seconds = 0;
@@ -196,7 +223,7 @@ private:
       overlay_value[k] = d;
       out.lowerings.push_back(Lowering{d, w.sx, w.sy, at, v, g, w.root, -2});
     }
-    void child(Index t, const Window& w) { out.children.push_back(Child{w, t}); }
+    void child(Index t, const Window& w) { out.children[stream_of(t)].push_back(Child{w, t}); }
     void propagated(std::size_t n) { out.propagated += n; }
     void pruned() { ++out.pruned; }
     void merged() { ++out.merged; }
@@ -219,6 +246,7 @@ private:
         ++settled;
       }
       r.state = Engine::INSIDE;
+      inside_[v] = 1;
       if((r.flags & (Engine::PSEUDO_SOURCE | Engine::IS_SOURCE)) && e_.expansion_useful(v)) {
         tasks_expand_.push_back(top.vertex);
         expand_values_.push_back(Expansion{r.dist, r.source, r.flags});
@@ -245,9 +273,9 @@ private:
     if(outputs_.size() < blocks)
       outputs_.resize(blocks);
     const typename Batch::Settings s = e_.settings();
-    const auto t0 = now();
+    const double t0 = profile_ ? now() : 0.0, w0 = profile_ ? wall() : 0.0;
     team_.for_blocks(n, block_size_, [&](std::size_t begin, std::size_t end, std::size_t b) {
-      const auto b0 = profile_ ? now() : Clock::time_point();
+      const double b0 = profile_ ? now() : 0.0;
       Block_output& out = outputs_[b];
       out.clear();
       Batch& batch = batches_.local();
@@ -262,38 +290,73 @@ private:
         } else {
           expand(tasks_expand_[i - n_lists], expand_values_[i - n_lists], out);
         }
-        out.task_end_lowerings.push_back(out.lowerings.size());
-        out.task_end_children.push_back(out.children.size());
       }
       if(profile_) {
         out.seconds = seconds(b0, now());
         busy_.local() += out.seconds;
       }
     });
-    const auto t1 = now();
+    const double t1 = profile_ ? now() : 0.0, w1 = profile_ ? wall() : 0.0;
     tasks_expand_.clear();
     expand_values_.clear();
-    // Step 3: the merge, in block order.
+    // Step 3: the merge, in block order, as independent streams that may run at the same time: the lowerings
+    // (vertex records, the queue), and the children of each of `child_streams` sets of lists (window lists, the
+    // ready lists), each with chunk ids reserved for it. A child's list is ready when an end of its edge was
+    // settled at the start of the merge (inside_; a lowering may reopen a settled pseudo-source meanwhile: its
+    // list is then only taken earlier, which the label-correcting schedule allows). No stream reads what another
+    // writes, and the ready lists are collected in stream order: the result does not depend on whether the
+    // streams run one after the other or at the same time.
     for(std::size_t b = 0; b < blocks; ++b) {
-      Block_output& out = outputs_[b];
-      e_.lists_.free_chunks(out.taken_chunks);
-      e_.live_ -= out.taken_windows;
-      e_.stats_.windows_propagated += out.propagated;
-      e_.stats_.windows_pruned += out.pruned;
-      e_.stats_.windows_merged += out.merged;
-      std::size_t l = 0, c = 0;
-      for(std::size_t t = 0; t < out.task_end_lowerings.size(); ++t) {
-        for(; l < out.task_end_lowerings[t]; ++l)
-          apply_lowering(out.lowerings[l]);
-        for(; c < out.task_end_children[t]; ++c)
-          e_.add_window(out.children[c].halfedge, out.children[c].w);
-      }
+      e_.lists_.free_chunks(outputs_[b].taken_chunks);
+      e_.live_ -= outputs_[b].taken_windows;
+    }
+    for(std::size_t k = 0; k < child_streams; ++k) {
+      std::size_t count = 0;
+      for(std::size_t b = 0; b < blocks; ++b)
+        count += outputs_[b].children[k].size();
+      reserved_count_[k] = count;
+      e_.lists_.reserve(count, reserved_[k]);
+    }
+    double stream_seconds[child_streams + 1] = {};
+    team_.for_blocks(child_streams + 1, 1, [&](std::size_t, std::size_t, std::size_t stream) {
+      const double m0 = profile_ ? now() : 0.0;
+      if(stream == child_streams)
+        merge_lowerings(blocks);
+      else
+        merge_children(blocks, stream);
+      if(profile_)
+        stream_seconds[stream] = seconds(m0, now());
+    });
+    for(std::size_t k = 0; k < child_streams; ++k) {
+      e_.lists_.release_reserved(reserved_count_[k], reserved_[k]);
+      e_.fifo_.insert(e_.fifo_.end(), ready_[k].begin(), ready_[k].end());
+      ready_[k].clear();
+      e_.live_ += reserved_count_[k];
+      e_.stats_.windows_created += reserved_count_[k];
+    }
+    if(e_.live_ > e_.stats_.peak_live_windows)
+      e_.stats_.peak_live_windows = e_.live_; // the merge only adds windows: its end is its peak
+    for(Index v : reopened_)
+      inside_[std::size_t(v)] = 0;
+    reopened_.clear();
+    for(std::size_t b = 0; b < blocks; ++b) {
+      e_.stats_.windows_propagated += outputs_[b].propagated;
+      e_.stats_.windows_pruned += outputs_[b].pruned;
+      e_.stats_.windows_merged += outputs_[b].merged;
     }
     e_.lists_processed_ += n_lists;
     if(profile_) {
-      const auto t2 = now();
-      profile_data_.parallel_seconds += seconds(t0, t1);
-      profile_data_.merge_seconds += seconds(t1, t2);
+      const double t2 = now();
+      (void)t0;
+      profile_data_.parallel_seconds += seconds(w0, w1);
+      (void)t2;
+      (void)t1;
+      double longest_stream = 0;
+      for(double x : stream_seconds) {
+        profile_data_.merge_seconds += x;
+        longest_stream = (std::max)(longest_stream, x);
+      }
+      profile_data_.merge_span_seconds += longest_stream;
       profile_data_.tasks += n;
       double work = 0, longest = 0;
       for(std::size_t b = 0; b < blocks; ++b) {
@@ -309,11 +372,75 @@ private:
     }
   }
 
+  void merge_lowerings(std::size_t blocks)
+  {
+    for(std::size_t b = 0; b < blocks; ++b) {
+      const std::vector<Lowering>& lowerings = outputs_[b].lowerings;
+      const std::size_t nl = lowerings.size();
+      for(std::size_t l = 0; l < nl; ++l) {
+        if(l + prefetch_far < nl)
+          prefetch_vertex(lowerings[l + prefetch_far].vertex);
+        apply_lowering(lowerings[l]);
+      }
+    }
+  }
+
+  // The children of one stream. Their lists are spread over the whole mesh and another thread touched them last:
+  // they are prefetched a few items ahead.
+  void merge_children(std::size_t blocks, std::size_t k)
+  {
+    std::vector<Index>& ids = reserved_[k];
+    std::vector<Index>& ready = ready_[k];
+    for(std::size_t b = 0; b < blocks; ++b) {
+      const std::vector<Child>& children = outputs_[b].children[k];
+      const std::size_t nc = children.size();
+      for(std::size_t c = 0; c < nc; ++c) {
+        if(c + prefetch_far < nc) {
+          const Index g = children[c + prefetch_far].halfedge;
+          e_.lists_.prefetch_head(g);
+          prefetch_address(&e_.queued_[std::size_t(g)]);
+          prefetch_address(&e_.mesh_.he[std::size_t(g)]);
+          prefetch_address(&e_.mesh_.he[std::size_t(Mesh::next(g))]);
+        }
+        if(c + prefetch_near < nc) {
+          const Index g = children[c + prefetch_near].halfedge;
+          e_.lists_.prefetch_newest_chunk(g);
+          prefetch_address(&inside_[std::size_t(e_.mesh_.source(g))]);
+          prefetch_address(&inside_[std::size_t(e_.mesh_.target(g))]);
+        }
+        const Index g = children[c].halfedge;
+        e_.lists_.push_reserved(g, children[c].w, ids);
+        if(!e_.queued_[std::size_t(g)] &&
+           (inside_[std::size_t(e_.mesh_.source(g))] || inside_[std::size_t(e_.mesh_.target(g))])) {
+          e_.queued_[std::size_t(g)] = 1;
+          ready.push_back(g);
+        }
+      }
+    }
+  }
+
+  static constexpr std::size_t prefetch_far = 16, prefetch_near = 6;
+  static void prefetch_address(const void* p)
+  {
+#if defined(__GNUC__)
+    __builtin_prefetch(p);
+#else
+    (void)p;
+#endif
+  }
+  void prefetch_vertex(Index v) const { prefetch_address(&e_.vertices_[std::size_t(v)]); }
+
   void apply_lowering(const Lowering& x)
   {
     const Index source = x.source != -2 ? x.source : e_.source_of_root(x.root);
-    if(e_.update_vertex(x.vertex, x.d, source) && e_.record_parents_)
+    typename Engine::Vertex_record& r = e_.vertices_[std::size_t(x.vertex)];
+    const bool was_inside = r.state == Engine::INSIDE;
+    if(!e_.update_vertex(x.vertex, x.d, source))
+      return;
+    if(e_.record_parents_)
       e_.parents_[std::size_t(x.vertex)] = Parent{x.sx, x.sy, x.at, x.halfedge, x.root};
+    if(was_inside && r.state != Engine::INSIDE)
+      reopened_.push_back(x.vertex); // a pseudo-source settled again later
   }
 
   struct Expansion
@@ -343,7 +470,7 @@ private:
         continue;
       const FT L = mesh.he[std::size_t(g)].length;
       const Point_2_ft<FT>& p = mesh.he[std::size_t(g)].opposite; // v in g's frame
-      out.children.push_back(Child{Window{FT(0), L, FT(L - p.x), FT(-p.y), d, v, lobe}, t});
+      out.children[stream_of(t)].push_back(Child{Window{FT(0), L, FT(L - p.x), FT(-p.y), d, v, lobe}, t});
     }
   }
 
@@ -357,6 +484,10 @@ private:
   std::vector<Index> tasks_lists_, tasks_expand_;
   std::vector<Expansion> expand_values_;
   std::vector<Block_output> outputs_;
+  std::vector<char> inside_;   // per vertex: settled (the ready rule of the merge's children; see propagate_round)
+  std::vector<Index> reopened_; // settled vertices a lowering of the merge put back into the queue
+  std::array<std::vector<Index>, child_streams> reserved_, ready_; // per stream: chunk ids, lists made ready
+  std::array<std::size_t, child_streams> reserved_count_{};
 };
 
 } // namespace internal
