@@ -65,6 +65,7 @@ struct Measure
   std::vector<double> wall, cpu;
   std::vector<double> distances;
   PG::internal::Vertex_oriented_parallel_profile profile;
+  std::size_t windows_propagated = 0, windows_created = 0;
 };
 
 // One propagation; threads 0: Sequential_tag. A timed run (its wall and CPU time are kept), or the profiled run
@@ -95,6 +96,8 @@ void run_once(const std::shared_ptr<const Surface>& surface, const Mesh& mesh, c
     for(auto v : vertices(mesh))
       m.distances.push_back(g.distance(v));
     m.profile = g.parallel_profile();
+    m.windows_propagated = g.statistics().windows_propagated;
+    m.windows_created = g.statistics().windows_created;
   }
 }
 
@@ -149,7 +152,7 @@ int main(int argc, char** argv)
   if(listed >= 0) return listed;
 
   std::vector<std::string> columns = {"mesh", "vertices", "threads", "wall_s", "cpu_s", "speedup", "cpu_ratio",
-                                      "rounds", "tasks", "settle_s", "merge_s", "merge_span_s", "parallel_s", "work_s",
+                                      "windows_propagated", "windows_created", "rounds", "tasks", "settle_s", "merge_s", "merge_span_s", "parallel_s", "work_s",
                                       "thread_busy_s", "max_rel_diff_vs_sequential", "identical_across_threads"};
   for(int p : PG::internal::Vertex_oriented_parallel_profile::projected_threads())
     if(p > 1) columns.push_back("projected_" + std::to_string(p) + "t_s");
@@ -176,7 +179,7 @@ int main(int argc, char** argv)
     const std::string load = load_text();
     const double seq_wall = mdcs_bench::median(sequential.wall), seq_cpu = mdcs_bench::median(sequential.cpu);
     table.add_row({spec.name, std::to_string(num_vertices(mesh)), "sequential", fmt(seq_wall), fmt(seq_cpu), "1", "1",
-                   "", "", "", "", "", "", "", "", "0", ""});
+                   std::to_string(sequential.windows_propagated), std::to_string(sequential.windows_created), "", "", "", "", "", "", "", "", "0", ""});
     bool identical = true;
     for(const Measure& m : parallel)
       identical = identical && m.distances.size() == parallel[0].distances.size() &&
@@ -189,6 +192,7 @@ int main(int argc, char** argv)
       for(double b : p.thread_busy_seconds) busy += (busy.empty() ? "" : ";") + fmt(b);
       std::vector<std::string> row = {spec.name, std::to_string(num_vertices(mesh)), std::to_string(o.threads[k]),
                                       fmt(wall), fmt(cpu), fmt(seq_wall / wall), fmt(cpu / seq_cpu),
+                                      std::to_string(m.windows_propagated), std::to_string(m.windows_created),
                                       std::to_string(p.rounds), std::to_string(p.tasks), fmt(p.settle_seconds),
                                       fmt(p.merge_seconds), fmt(p.merge_span_seconds), fmt(p.parallel_seconds), fmt(p.work_seconds), busy,
                                       fmt(max_relative_difference(sequential.distances, m.distances), "%.3g"),
