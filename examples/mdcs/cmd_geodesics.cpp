@@ -18,6 +18,7 @@ int run_geodesics_command(Invocation& run)
 {
   Geodesics_settings s = parse_geodesics_settings(run.options);
   s.threads = threads_text(run.threads);
+  s.thread_count = run.threads.used();
   if(run.options.given("matrix")) return run_geodesic_matrix(run, s);
   Geodesics_run r = run_geodesics(s, run.progress);
   Run_summary_json json = geodesics_summary_json(s, r);

@@ -138,6 +138,18 @@ inline Geo_point geo_to_point(const std::array<double, 3>& p) { return Geo_point
 
 // The distances of one method of the package (every class shares the facade's interface): sources, limits,
 // propagation, vertex distances (checked), and the distances and shortest paths of the targets, into `run`.
+// The exact method's distances-only propagation runs on the parallel schedule with every thread count, 1 included,
+// so that its distances do not depend on --threads (bit for bit); the other classes have no such option.
+template <class Geodesics>
+void set_geodesics_threads(Geodesics&, std::size_t)
+{}
+template <class TM, class FT, class VPM>
+void set_geodesics_threads(PG::Exact_geodesic_distances_3<TM, FT, VPM>& geodesics, std::size_t threads)
+{
+  if(CGAL::MDCS::has_parallel_support())
+    geodesics.set_concurrency(CGAL::Parallel_tag(), threads);
+}
+
 template <class Geodesics, class Make, class Surface>
 void run_geodesic_class(Make make, const Surface& mesh, const Geodesics_settings& s, const std::vector<Geo_location>& targets,
                         Geodesics_run& run, const Progress_bar& progress)
@@ -151,6 +163,7 @@ void run_geodesic_class(Make make, const Surface& mesh, const Geodesics_settings
   const auto t_setup = std::chrono::steady_clock::now();
   progress.begin("setup");
   Geodesics geodesics = make(s.full_field ? PG::Geodesic_memory_mode::full_field : PG::Geodesic_memory_mode::distances_only);
+  set_geodesics_threads(geodesics, s.thread_count);
   for(const Geo_location& loc : run.sources) {
     if(loc.at_vertex) geodesics.add_source(vertex(loc.index));
     else geodesics.add_source(face_location(loc));
@@ -489,6 +502,7 @@ Geodesics_run run_geodesics_on(const Surface& mesh, const std::string& mesh_name
       const auto t_exact = std::chrono::steady_clock::now();
       typedef PG::Exact_geodesic_distances_3<TM> Exact;
       Exact geodesics(input, PG::Geodesic_memory_mode::distances_only);
+      set_geodesics_threads(geodesics, s.thread_count);
       for(const Geo_location& loc : run.sources) {
         if(loc.at_vertex) geodesics.add_source(Traits::vertex(loc.index));
         else geodesics.add_source(typename Exact::Face_location(Traits::face_location(loc)));

@@ -89,6 +89,7 @@ struct Geodesics_settings
   bool picture = true;
   bool export_data = true; // paths.json/.csv, isolines.csv (the demo's runs skip them)
   std::string threads;      // for the summary (empty: not printed)
+  std::size_t thread_count = 1; // --threads, effective: the exact method's distances-only propagation runs on them
   bool repair = false;      // --repair: CGAL's soup repair on a file that is not a valid mesh
 };
 

@@ -73,6 +73,45 @@ TEST_CASE("concurrency: blocks and per-block results do not depend on the thread
   CHECK(calls == 3);
 }
 
+TEST_CASE("concurrency: a team runs many steps with the blocks of parallel_for_blocks", "[common][concurrency]")
+{
+  // Many short steps on one team (the parallel single-source propagation's rounds): every step sees the same
+  // blocks, runs each once, and a per-block sum reduced in block order is identical for every thread count.
+  const std::size_t steps = 300;
+  auto run = [&](std::size_t threads) {
+    MDCS::Parallel_team team(threads);
+    CHECK(team.threads() == (threads == 0 ? 1 : threads));
+    double total = 0;
+    for(std::size_t step = 0; step < steps; ++step) {
+      const std::size_t n = 1 + (step * 37) % 301, block = 4;
+      std::vector<double> partial((n + block - 1) / block, 0.0);
+      std::vector<int> runs(partial.size(), 0);
+      std::vector<std::size_t> begins(partial.size(), 0), ends(partial.size(), 0);
+      team.for_blocks(n, block, [&](std::size_t b, std::size_t e, std::size_t k) { // no Catch2 macro on a worker
+        ++runs[k];
+        begins[k] = b;
+        ends[k] = e;
+        for(std::size_t i = b; i < e; ++i)
+          partial[k] += std::sin(double(i + step)) / double(i + 1);
+      });
+      for(std::size_t k = 0; k < runs.size(); ++k) {
+        REQUIRE(runs[k] == 1);
+        REQUIRE(begins[k] == k * block);
+        REQUIRE(ends[k] == std::min(n, (k + 1) * block));
+      }
+      total = std::accumulate(partial.begin(), partial.end(), total);
+    }
+    return total;
+  };
+  const double one = run(1);
+  for(std::size_t threads : {2u, 3u, 8u})
+    CHECK(run(threads) == one); // exact equality on purpose
+  MDCS::Parallel_team team(3);
+  CHECK_THROWS_AS(team.for_blocks(40, 4, [](std::size_t b, std::size_t, std::size_t) {
+    if(b == 20) throw std::runtime_error("block 5");
+  }), std::runtime_error);
+}
+
 TEST_CASE("concurrency: an exception in a block reaches the caller", "[common][concurrency]")
 {
   for(std::size_t threads : {1u, 2u, 8u})

@@ -328,6 +328,63 @@ std::size_t parallel_ordered_pipeline(std::size_t n, std::size_t threads, std::v
   return delivered.load();
 }
 
+/*!
+  \brief `parallel_for_blocks()` for many short parallel steps in a row (one call per step, thousands of steps): the
+  team keeps its threads' arena between the calls instead of setting it up each time. Same blocks and guarantees as
+  `parallel_for_blocks()`: only which thread runs a block depends on the thread count. Not for nested use.
+*/
+class Parallel_team
+{
+public:
+  /// `threads`: the effective number of threads (see `effective_threads()`).
+  explicit Parallel_team(std::size_t threads) : threads_(threads == 0 ? 1 : threads)
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(threads_ > 1) {
+      control_.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism,
+                                             (std::max)(threads_, hardware_threads())));
+      arena_.reset(new tbb::task_arena(static_cast<int>(threads_)));
+    }
+#endif
+  }
+
+  std::size_t threads() const { return threads_; }
+
+  /// `body(begin, end, block)` for the blocks of `[0, n)` of `block_size` items.
+  template <class Body>
+  void for_blocks(std::size_t n, std::size_t block_size, Body body)
+  {
+    if(block_size == 0)
+      block_size = 1;
+    const internal::Block_partition blocks{n, block_size};
+    const std::size_t count = blocks.count();
+    if(threads_ <= 1 || count <= 1 || !has_parallel_support()) {
+      for(std::size_t b = 0; b < count; ++b)
+        body(blocks.begin(b), blocks.end(b), b);
+      return;
+    }
+#ifdef CGAL_LINKED_WITH_TBB
+    arena_->execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for(std::size_t b = r.begin(); b != r.end(); ++b)
+                            body(blocks.begin(b), blocks.end(b), b);
+                        },
+                        tbb::simple_partitioner());
+    });
+#else
+    parallel_for_blocks(n, block_size, threads_, body);
+#endif
+  }
+
+private:
+  std::size_t threads_;
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> control_;
+  std::unique_ptr<tbb::task_arena> arena_;
+#endif
+};
+
 /// `parallel_for_blocks()` with one block per item: `body(i)` for every `i` in `[0, n)`.
 template <class Body>
 void parallel_for_each_index(std::size_t n, std::size_t threads, Body body)

@@ -9,6 +9,7 @@
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_EXACT_GEODESIC_DISTANCES_3_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_EXACT_GEODESIC_DISTANCES_3_H
 
+#include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_distances_facade.h>
@@ -135,6 +136,46 @@ public:
 
   /// See `set_vertex_oriented_full_field()`.
   bool vertex_oriented_full_field() const { return this->engine_const().vertex_oriented_full_field(); }
+
+  /*!
+    \brief Runs the vertex-oriented schedule of `distances_only` runs in parallel, on `threads` threads (0: every
+    hardware thread), with `ConcurrencyTag` `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag` (when TBB is
+    linked in); `CGAL::Sequential_tag` (the default) runs the sequential schedule.
+
+    The parallel schedule processes the windows in rounds: vertices are settled until a few hundred edge lists are
+    ready, the lists cross their faces on several threads, each reading the state of the start of the round and
+    writing into its own buffer, and the buffers are applied in a fixed order. The distances are therefore
+    identical, bit for bit, for every thread count (1 thread included), and equal to the sequential schedule's up to
+    rounding (about 1e-15 relative). Runs with stop targets or Parent records (`full_field` with
+    `set_vertex_oriented_full_field(true)`) stay sequential; `used_parallel_propagation()` tells.
+  */
+  template <class ConcurrencyTag>
+  void set_concurrency(ConcurrencyTag, std::size_t threads = 0)
+  {
+    this->engine().set_parallel(CGAL::MDCS::Is_parallel_tag<ConcurrencyTag>::value,
+                                CGAL::MDCS::effective_threads<ConcurrencyTag>(threads));
+    this->invalidate();
+  }
+
+  /// The number of threads of the parallel schedule (1 with `CGAL::Sequential_tag`).
+  std::size_t threads() const { return this->engine_const().threads(); }
+
+  /// Whether the last propagation used the parallel schedule (see `set_concurrency()`).
+  bool used_parallel_propagation() const { return this->engine_const().used_parallel_schedule(); }
+
+  /// \cond SKIP_IN_MANUAL
+  // The parallel schedule's rounds (lists per round, default 256; tests and benchmarks) and its measurements.
+  void set_parallel_lists_per_round(std::size_t n)
+  {
+    this->engine().set_parallel_lists_per_round(n);
+    this->invalidate();
+  }
+  void set_parallel_profile(bool profile) { this->engine().set_parallel_profile(profile); }
+  const internal::Vertex_oriented_parallel_profile& parallel_profile() const
+  {
+    return this->engine_const().parallel_profile();
+  }
+  /// \endcond
 
   /// Whether the last propagation used the vertex-oriented schedule.
   bool used_vertex_oriented_propagation() const { return this->engine_const().uses_vertex_oriented_engine(); }

@@ -14,6 +14,10 @@
 //   faces), for full-field runs on meshes with a needle face (see the constructor), and for interval merging with
 //   the full field, a limit or stop targets (Merged_window_geodesic_distances_3 keeps its earlier behaviour there).
 //
+// - The parallel schedule of the vertex-oriented engine (vertex_oriented_parallel.h): with set_parallel(true, n),
+//   for the vertex-oriented runs without stop targets and without Parent records (distances_only, with or without a
+//   limit); the other runs stay sequential.
+//
 // The facade calls clear(), then the option setters, then adds the sources: the choice is made at the first
 // source, when every option is known. Both engines are built on first use only.
 
@@ -23,6 +27,7 @@
 #include <CGAL/Polyhedral_geodesics_3/Geodesic_types.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Geodesic_mesh.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/exact_window_propagation.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_parallel.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_paths.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_propagation.h>
 
@@ -105,6 +110,23 @@ public:
   // serves those runs (the tests' oracle and its statistics).
   void set_vertex_oriented_full_field(bool enable) { vertex_oriented_full_field_ = enable; }
   bool vertex_oriented_full_field() const { return vertex_oriented_full_field_; }
+  // The parallel schedule (vertex_oriented_parallel.h) on `threads` threads (the effective count, >= 1) for the runs
+  // it serves; false: the sequential schedule.
+  void set_parallel(bool parallel, std::size_t threads)
+  {
+    parallel_ = parallel;
+    threads_ = threads == 0 ? 1 : threads;
+  }
+  bool parallel() const { return parallel_; }
+  std::size_t threads() const { return threads_; }
+  // Rounds of the parallel schedule: set (> 0) before a run to change the lists per round (tests, benchmarks).
+  void set_parallel_lists_per_round(std::size_t n) { lists_per_round_ = n; }
+  // Measure the parallel runs (Vertex_oriented_parallel_profile, for the benchmark).
+  void set_parallel_profile(bool profile) { profile_ = profile; }
+  const Vertex_oriented_parallel_profile& parallel_profile() const { return parallel_profile_; }
+  // Whether the last run used the parallel schedule.
+  bool used_parallel_schedule() const { return used_parallel_; }
+
   // The engine of the last run (or of the run being prepared).
   bool uses_vertex_oriented_engine() const { return use_vertex_engine_; }
 
@@ -132,8 +154,19 @@ public:
       if(paths_)
         paths_->invalidate();
       points_from_windows_ = false;
-      vertex_engine().run(progress);
+      used_parallel_ = parallel_ && !keep_windows_ && stop_targets_.empty();
+      if(used_parallel_) {
+        Vertex_oriented_parallel_runner<FT> runner(vertex_engine(), threads_);
+        if(lists_per_round_ > 0)
+          runner.set_lists_per_round(lists_per_round_);
+        runner.set_profile(profile_);
+        runner.run(progress);
+        parallel_profile_ = runner.profile();
+      } else {
+        vertex_engine().run(progress);
+      }
     } else {
+      used_parallel_ = false;
       window_engine().run(progress);
     }
   }
@@ -151,8 +184,8 @@ public:
   // Point queries and paths (the facade checks the memory mode first).
   //
   // On the vertex-oriented records a point query runs a small second propagation (vertex_oriented_paths.h):
-  // 0.7-3 ms each on 3k-38k vertices, against 1-20 us from the window propagation's field, which costs 5-13x the
-  // records run to build. So many point queries after one run pay "rent" until it would have bought the window
+  // about 6 us each on 3k vertices and 0.5 ms on 38k, against 0.6-20 us from the window propagation's field,
+  // which costs 3.5-13x the records run to build. So many point queries after one run pay "rent" until it would have bought the window
   // field: once the queries' windows exceed rent_factor times the run's own, the window propagation runs once
   // (same sources and options, no progress report) and answers every later point query and path to a point.
   // Vertex distances, nearest sources and paths to vertices stay those of the records. The switch depends on
@@ -291,6 +324,9 @@ private:
   bool points_from_windows_ = false, point_queries_switch_ = true;
   std::vector<Added_source> sources_;
   bool has_special_edges_ = false;
+  bool parallel_ = false, profile_ = false, used_parallel_ = false;
+  std::size_t threads_ = 1, lists_per_round_ = 0;
+  Vertex_oriented_parallel_profile parallel_profile_;
   FT limit_ = FT(0), merge_tolerance_ = FT(0);
   std::vector<Index> stop_targets_;
 };

@@ -55,8 +55,13 @@ namespace Polyhedral_geodesics_3 {
 namespace internal {
 
 template <class FT>
+class Vertex_oriented_parallel_runner;
+
+template <class FT>
 class Vertex_oriented_window_propagation
 {
+  friend class Vertex_oriented_parallel_runner<FT>; // the parallel schedule (vertex_oriented_parallel.h)
+
 public:
   typedef Geodesic_mesh<FT> Mesh;
   typedef typename Mesh::Index Index;

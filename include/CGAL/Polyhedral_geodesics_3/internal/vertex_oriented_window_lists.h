@@ -19,6 +19,7 @@
 
 #include <CGAL/Polyhedral_geodesics_3/internal/Large_page_allocator.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -116,6 +117,30 @@ public:
     }
   }
 
+  // take() for the parallel schedule (vertex_oriented_parallel.h): several lists are taken at the same time, so
+  // their chunks are not freed here but appended to `taken` (free_chunks() frees them afterwards, in a fixed order).
+  // Reads the chunks and writes head_[g] only: takes of distinct lists may run concurrently.
+  template <class Vector>
+  void take_deferred(Index g, Vector& out, std::vector<Index>& taken)
+  {
+    Index c = head_[std::size_t(g)];
+    head_[std::size_t(g)] = -1;
+    while(c >= 0) {
+      const Chunk& ch = chunk(c);
+      const int n = chunk_count_[std::size_t(c)];
+      for(int k = 0; k < n; ++k)
+        out.push_back(ch.w[k]);
+      taken.push_back(c);
+      c = chunk_next_[std::size_t(c)];
+    }
+  }
+
+  void free_chunks(const std::vector<Index>& taken)
+  {
+    for(Index c : taken)
+      free_chunk(c);
+  }
+
   // Asks the processor to load the windows of list g (a hint; nothing happens without GCC or Clang).
   void prefetch(Index g) const
   {
@@ -124,6 +149,80 @@ public:
       const char* p = reinterpret_cast<const char*>(&chunk(c));
       for(std::size_t line = 0; line < sizeof(Chunk); line += 64)
         __builtin_prefetch(p + line);
+    }
+#else
+    (void)g;
+#endif
+  }
+
+  // Pushes from several threads at once (the parallel schedule's merge): reserve() hands out `count` chunk ids to a
+  // stream (sequentially, before the streams run); push_reserved() then allocates from them only, so that streams
+  // pushing onto disjoint sets of lists write disjoint memory; release_reserved() returns the unused ids and counts
+  // the used ones (sequentially, after the streams, in a fixed order).
+  void reserve(std::size_t count, std::vector<Index>& ids)
+  {
+    ids.clear();
+    while(ids.size() < count && !free_.empty()) {
+      ids.push_back(free_.back());
+      free_.pop_back();
+    }
+    while(ids.size() < count) {
+      const Index c = Index(chunk_next_.size());
+      if(std::size_t(c) / block_chunks >= blocks_.size())
+        blocks_.emplace_back(new_block());
+      chunk_next_.push_back(-1);
+      chunk_count_.push_back(0);
+      ids.push_back(c);
+    }
+    std::reverse(ids.begin(), ids.end()); // push_reserved() takes them from the back: in the order reserved
+  }
+
+  void push_reserved(Index g, const Window& w, std::vector<Index>& ids)
+  {
+    Index c = head_[std::size_t(g)];
+    if(c < 0 || chunk_count_[std::size_t(c)] == capacity) {
+      const Index n = ids.back();
+      ids.pop_back();
+      chunk_count_[std::size_t(n)] = 0;
+      chunk_next_[std::size_t(n)] = c;
+      head_[std::size_t(g)] = n;
+      c = n;
+    }
+    std::uint8_t& count = chunk_count_[std::size_t(c)];
+    chunk(c).w[count] = w;
+    ++count;
+  }
+
+  void release_reserved(std::size_t reserved, std::vector<Index>& ids)
+  {
+    live_chunks_ += reserved - ids.size();
+    if(live_chunks_ > peak_chunks_)
+      peak_chunks_ = live_chunks_;
+    while(!ids.empty()) {
+      free_.push_back(ids.back());
+      ids.pop_back();
+    }
+  }
+
+  // Hints for a push() onto list g soon (the parallel schedule's merge): first its head, then (once the head is
+  // loaded) its newest chunk.
+  void prefetch_head(Index g) const
+  {
+#if defined(__GNUC__)
+    __builtin_prefetch(&head_[std::size_t(g)], 1);
+#else
+    (void)g;
+#endif
+  }
+  void prefetch_newest_chunk(Index g) const
+  {
+#if defined(__GNUC__)
+    const Index c = head_[std::size_t(g)];
+    if(c >= 0) {
+      __builtin_prefetch(&chunk_count_[std::size_t(c)], 1);
+      const char* p = reinterpret_cast<const char*>(&chunk(c));
+      for(std::size_t line = 0; line < sizeof(Chunk); line += 64)
+        __builtin_prefetch(p + line, 1);
     }
 #else
     (void)g;
