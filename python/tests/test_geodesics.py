@@ -317,7 +317,8 @@ def test_the_gil_is_released_during_a_computation():
     t = threading.Thread(target=count)
     start = time.perf_counter()
     t.start()
-    mesh.distance_matrix(np.arange(0, 14400, 600), method="fast_marching", threads=1, progress=False)
+    # 144 rows: about 0.3 s in Release on an idle machine (24 rows took 0.08 s, too short to tell)
+    mesh.distance_matrix(np.arange(0, 14400, 100), method="fast_marching", threads=1, progress=False)
     end = time.perf_counter()
     stop.set()
     t.join()
@@ -331,6 +332,7 @@ def test_statistics_and_field_attributes(bumpy):
     mesh, _, _ = bumpy
     field = mesh.field(0, progress=False)
     s = field.statistics()
-    assert s["windows_created"] > 0 and s["stored_windows"] > 0
+    # the full field keeps per-vertex records (the default), not windows
+    assert s["windows_created"] > 0 and s["stored_windows"] == 0 and s["peak_memory_bytes"] > 0
     assert field.distances.flags.writeable is False
     assert "exact" in repr(field)

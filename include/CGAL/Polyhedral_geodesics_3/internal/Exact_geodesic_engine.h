@@ -247,13 +247,7 @@ private:
     const std::size_t run_windows = vertex_->statistics().windows_created + mesh_.number_of_vertices;
     if(paths_->query_windows_since_run() <= rent_factor * run_windows)
       return;
-    Window_engine& w = window_engine();
-    w.clear();
-    w.set_merge_tolerance(merge_tolerance_);
-    w.set_keep_windows(true);
-    if(has_limit_) w.set_distance_limit(limit_);
-    else w.clear_distance_limit();
-    w.set_stop_targets(stop_targets_);
+    Window_engine& w = prepared_window_engine(true);
     for(const Added_source& s : sources_) {
       if(s.at_vertex) w.add_vertex_source(s.index, s.id);
       else w.add_face_source(s.index, s.barycentric, s.id);
@@ -283,13 +277,20 @@ private:
       v.clear();
       return;
     }
+    prepared_window_engine(keep_windows_);
+  }
+
+  // The window engine cleared and set to this run's options.
+  Window_engine& prepared_window_engine(bool keep_windows)
+  {
     Window_engine& w = window_engine();
     w.clear();
     w.set_merge_tolerance(merge_tolerance_);
-    w.set_keep_windows(keep_windows_);
+    w.set_keep_windows(keep_windows);
     if(has_limit_) w.set_distance_limit(limit_);
     else w.clear_distance_limit();
     w.set_stop_targets(stop_targets_);
+    return w;
   }
 
   Window_engine& window_engine()
