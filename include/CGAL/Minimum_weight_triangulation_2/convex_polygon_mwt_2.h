@@ -11,7 +11,7 @@
 
 #include <CGAL/Minimum_weight_triangulation_2/Mwt_result.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Coordinate_range_2.h>
-#include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Polygon_dp_2.h>
 #include <CGAL/MDCS/progress.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
@@ -89,72 +89,22 @@ double convex_polygon_mwt_2(const PointRange& polygon, OutputIterator out, Edge_
   };
   std::vector<double> x(std::size_t(k), 0.0), y(std::size_t(k), 0.0);
   for(int i = 0; i < k; ++i) { x[i] = CGAL::to_double(p[i].x()); y[i] = CGAL::to_double(p[i].y()); }
-  // D[i][j]: minimum total length of the diagonals triangulating the sub-polygon i, i+1, ..., j.
-  std::vector<double> D(std::size_t(k) * k, 0.0);
-  std::vector<int> best(std::size_t(k) * k, -1);
-  const internal::Length_sum_error_bound err(2 * std::size_t(k));
-  std::size_t exact = 0;
-  // the diagonals of the sub-polygon i..j with apex c (best[] final inside), appended to `o`
-  auto segments = [&](int i0, int j0, int c0, std::vector<internal::Length_segment>& o) {
-    std::vector<std::array<int, 3>> stack{{i0, j0, c0}};
-    while(!stack.empty()) {
-      const auto t = stack.back();
-      stack.pop_back();
-      const int i = t[0], j = t[1], c = t[2];
-      if(c > i + 1) { o.push_back({{x[i], y[i], x[c], y[c]}}); stack.push_back({i, c, best[i * k + c]}); }
-      if(j > c + 1) { o.push_back({{x[c], y[c], x[j], y[j]}}); stack.push_back({c, j, best[c * k + j]}); }
-    }
-  };
   // work of gap g: (k - g) sub-polygons of g - 1 apexes each; reported by the share of sum over g of (k - g)(g - 1)
   const double total_work = std::max(1.0, double(k) * double(k - 1) * double(k - 2) / 6.0);
   double work = 0;
   CGAL::MDCS::internal::Progress_reporter<Progress> report(progress, "convex dynamic program", 1000);
-  for(int gap = 2; gap < k; ++gap) {
+  auto on_gap = [&](int gap) {
     work += double(k - gap) * double(gap - 1);
     report(std::size_t(1000.0 * std::min(1.0, work / total_work)));
-    for(int i = 0; i + gap < k; ++i) {
-      const int j = i + gap;
-      double m = std::numeric_limits<double>::infinity(), second = m;
-      auto value = [&](int c) { return D[i * k + c] + D[c * k + j] + (c > i + 1 ? len(i, c) : 0.0) + (j > c + 1 ? len(c, j) : 0.0); };
-      for(int c = i + 1; c < j; ++c) {
-        const double v = value(c);
-        if(v < m) { second = m; m = v; best[i * k + j] = c; }
-        else if(v < second) second = v;
-      }
-      if(gap > 2 && !err.certainly_less(m, second)) {
-        // ambiguous in double: the exact minimum, the smallest apex on exact ties
-        std::vector<internal::Length_segment> cs, s;
-        int cc = -1;
-        double cv = m;
-        for(int c = i + 1; c < j; ++c) {
-          const double v = value(c);
-          if(err.certainly_less(m, v)) continue;
-          s.clear();
-          segments(i, j, c, s);
-          if(cc < 0 || internal::compare_length_sums(s, cs, metric) < 0) { cc = c; cv = v; cs.swap(s); }
-        }
-        best[i * k + j] = cc;
-        m = cv;
-        ++exact;
-      }
-      D[i * k + j] = m;
-    }
-  }
+  };
+  auto every_chord = [](int, int) { return true; };
+  auto every_apex = [](int, int, int) { return true; };
+  const double diagonals =
+    internal::polygon_min_weight_dp(k, x, y, len, every_chord, every_apex, on_gap, metric, out, exact_decisions);
   report.finish();
-  if(exact_decisions) *exact_decisions = exact;
-  std::vector<std::array<int, 2>> stack{{0, k - 1}};
-  while(!stack.empty()) {
-    const auto ij = stack.back();
-    stack.pop_back();
-    if(ij[1] - ij[0] < 2) continue;
-    const int c = best[ij[0] * k + ij[1]];
-    *out++ = std::array<int, 3>{ij[0], c, ij[1]};
-    stack.push_back({ij[0], c});
-    stack.push_back({c, ij[1]});
-  }
   double perimeter = 0;
   for(int i = 0; i < k; ++i) perimeter += len(i, (i + 1) % k);
-  return perimeter + D[k - 1];
+  return perimeter + diagonals;
 }
 
 } // namespace Minimum_weight_triangulation_2

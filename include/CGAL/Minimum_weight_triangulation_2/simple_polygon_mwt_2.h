@@ -12,7 +12,7 @@
 
 #include <CGAL/Minimum_weight_triangulation_2/Mwt_result.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Coordinate_range_2.h>
-#include <CGAL/Minimum_weight_triangulation_2/internal/Exact_length_sum_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/internal/Polygon_dp_2.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/number_utils.h>
 
@@ -169,85 +169,19 @@ double simple_polygon_mwt_2(const PointRange& polygon, OutputIterator out, Edge_
   for(int i = 0; i < k; ++i)
     for(int j = i + 1; j < k; ++j)
       usable[i * k + j] = (j == i + 1 || (i == 0 && j == k - 1)) ? 1 : char(internal::is_polygon_diagonal(p, i, j, orient));
-  const double inf = std::numeric_limits<double>::infinity();
-  // D[i][j]: minimum total length of the diagonals triangulating the sub-polygon i, i+1, ..., j (its chord (i, j)
-  // usable), +infinity when it has no triangulation
-  std::vector<double> D(size * size, inf);
-  std::vector<int> best(size * size, -1);
-  for(int i = 0; i + 1 < k; ++i)
-    D[i * k + i + 1] = 0;
-  const internal::Length_sum_error_bound err(2 * size);
-  std::size_t exact = 0;
-  auto segments = [&](int i0, int j0, int c0, std::vector<internal::Length_segment>& o) {
-    std::vector<std::array<int, 3>> stack{{i0, j0, c0}};
-    while(!stack.empty()) {
-      const auto t = stack.back();
-      stack.pop_back();
-      const int i = t[0], j = t[1], c = t[2];
-      if(c > i + 1) { o.push_back({{x[i], y[i], x[c], y[c]}}); stack.push_back({i, c, best[i * k + c]}); }
-      if(j > c + 1) { o.push_back({{x[c], y[c], x[j], y[j]}}); stack.push_back({c, j, best[c * k + j]}); }
-    }
+  auto chord_usable = [&](int i, int j) { return usable[i * k + j] != 0; };
+  auto apex_usable = [&](int i, int c, int j) {
+    return usable[i * k + c] && usable[c * k + j] && orient(p[i], p[c], p[j]) == CGAL::LEFT_TURN;
   };
-  for(int gap = 2; gap < k; ++gap)
-    for(int i = 0; i + gap < k; ++i) {
-      const int j = i + gap;
-      if(!usable[i * k + j])
-        continue;
-      auto candidate = [&](int c) {
-        return usable[i * k + c] && usable[c * k + j] && D[i * k + c] < inf && D[c * k + j] < inf &&
-               orient(p[i], p[c], p[j]) == CGAL::LEFT_TURN;
-      };
-      auto value = [&](int c) {
-        return D[i * k + c] + D[c * k + j] + (c > i + 1 ? len(i, c) : 0.0) + (j > c + 1 ? len(c, j) : 0.0);
-      };
-      double m = inf, second = inf;
-      for(int c = i + 1; c < j; ++c) {
-        if(!candidate(c))
-          continue;
-        const double v = value(c);
-        if(v < m) { second = m; m = v; best[i * k + j] = c; }
-        else if(v < second) second = v;
-      }
-      if(m < inf && second < inf && !err.certainly_less(m, second)) {
-        // ambiguous in double: the exact minimum, the smallest apex on exact ties
-        std::vector<internal::Length_segment> cs, s;
-        int cc = -1;
-        double cv = m;
-        for(int c = i + 1; c < j; ++c) {
-          if(!candidate(c))
-            continue;
-          const double v = value(c);
-          if(err.certainly_less(m, v))
-            continue;
-          s.clear();
-          segments(i, j, c, s);
-          if(cc < 0 || internal::compare_length_sums(s, cs, metric) < 0) { cc = c; cv = v; cs.swap(s); }
-        }
-        best[i * k + j] = cc;
-        m = cv;
-        ++exact;
-      }
-      D[i * k + j] = m;
-    }
-  if(exact_decisions)
-    *exact_decisions = exact;
-  if(!(D[k - 1] < inf)) // cannot happen for a simple polygon (every one has a triangulation)
+  auto no_progress = [](int) {};
+  const double diagonals =
+    internal::polygon_min_weight_dp(k, x, y, len, chord_usable, apex_usable, no_progress, metric, out, exact_decisions);
+  if(!(diagonals < std::numeric_limits<double>::infinity())) // cannot happen: every simple polygon has one
     throw std::logic_error(std::string(who) + ": no triangulation found");
-  std::vector<std::array<int, 2>> stack{{0, k - 1}};
-  while(!stack.empty()) {
-    const auto ij = stack.back();
-    stack.pop_back();
-    if(ij[1] - ij[0] < 2)
-      continue;
-    const int c = best[ij[0] * k + ij[1]];
-    *out++ = std::array<int, 3>{ij[0], c, ij[1]};
-    stack.push_back({ij[0], c});
-    stack.push_back({c, ij[1]});
-  }
   double perimeter = 0;
   for(int i = 0; i < k; ++i)
     perimeter += len(i, (i + 1) % k);
-  return perimeter + D[k - 1];
+  return perimeter + diagonals;
 }
 
 /*!
