@@ -180,6 +180,20 @@ double number_or(py::handle object, const char* name, double none_value, double 
   return checked_number(object, name, low, strict);
 }
 
+std::size_t checked_thread_count(py::handle object)
+{
+  const char* what = "mdcs: threads must be an integer from 0 (every hardware thread) to 1024";
+  if(PyBool_Check(object.ptr()) || !PyIndex_Check(object.ptr())) throw Value_error(what);
+  long long n = 0;
+  try {
+    n = py::reinterpret_borrow<py::object>(object).cast<long long>();
+  } catch(const py::cast_error&) {
+    throw Value_error(what); // beyond long long
+  }
+  if(n < 0 || n > 1024) throw Value_error(std::string(what) + ", got " + std::to_string(n));
+  return std::size_t(n);
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 
 Progress_bridge::Progress_bridge(py::object callback, double interval_seconds)

@@ -77,6 +77,10 @@ double checked_number(py::handle object, const char* name, double low, bool stri
 /// A number that may be None (returns `none_value`).
 double number_or(py::handle object, const char* name, double none_value, double low, bool strict);
 
+/// A thread count: an integer in [0, 1024] (0: every hardware thread; the command-line tool's range), or
+/// ValueError.
+std::size_t checked_thread_count(py::handle object);
+
 /*!
   The progress callback handed to the library's algorithms (signature `bool(const char* stage, double fraction)`).
   It is called without the GIL; it takes the GIL at most every `interval` (and for the last report of a stage),

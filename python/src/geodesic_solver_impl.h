@@ -53,6 +53,12 @@ public:
 
   void set_path_shortening(bool on) override { g_.set_path_shortening(on); }
 
+  void set_threads(std::size_t threads) override
+  {
+    if(threads != threads_) set_threads_of(g_, threads, 0); // (a change invalidates the results)
+    threads_ = threads;
+  }
+
   void compute(Progress_bridge& progress) override { g_.compute(std::ref(progress)); }
 
   void compute_quietly() override { g_.compute(); }
@@ -92,6 +98,17 @@ public:
   CGAL::Polyhedral_geodesics_3::Geodesic_statistics statistics() const override { return g_.statistics(); }
 
 private:
+  // Classes with a parallel single-source schedule (set_concurrency(), the exact class) get the thread count.
+  template <class G>
+  static auto set_threads_of(G& g, std::size_t threads, int)
+    -> decltype(g.set_concurrency(CGAL::Parallel_if_available_tag(), threads), void())
+  {
+    if(threads == 1) g.set_concurrency(CGAL::Sequential_tag());
+    else g.set_concurrency(CGAL::Parallel_if_available_tag(), threads);
+  }
+  template <class G>
+  static void set_threads_of(G&, std::size_t, long) {}
+
   // Collects the path as the library reports it.
   struct Visitor
   {
@@ -112,6 +129,7 @@ private:
 
   const Geo_mesh& mesh_;
   Geodesics g_;
+  std::size_t threads_ = 1;
 };
 
 } // namespace mdcs_python

@@ -74,6 +74,9 @@ public:
   virtual void set_distance_limit(double limit) = 0;
   virtual void set_stop_targets(const std::vector<std::size_t>& mesh_vertices) = 0;
   virtual void set_path_shortening(bool on) = 0;
+  /// The propagation's threads (1: the sequential schedule, else the parallel one on that many threads, 0 = every
+  /// hardware thread). Only the exact class has a parallel single-source schedule; the others ignore it.
+  virtual void set_threads(std::size_t) {}
   virtual void compute(Progress_bridge& progress) = 0;
   virtual void compute_quietly() = 0;
   /// Distances and nearest sources (-1: unreachable) of every mesh vertex, after compute().
@@ -177,6 +180,27 @@ private:
   mutable std::mutex pool_mutex_;
   mutable std::vector<std::pair<Solver_kind, std::unique_ptr<Geodesic_solver>>> pool_;
 };
+
+/// Locates points and rays on the surface (geodesic_queries.cpp): an AABB tree of the mesh, built once.
+struct Point_locator;
+std::shared_ptr<const Point_locator> make_point_locator(const Geodesic_surface& s);
+/// The surface point closest to each of the k points (k x 3): the caller's face and barycentric coordinates.
+void locate_points(const Geodesic_surface& s, const Point_locator& l, const double* points, std::size_t k,
+                   std::int64_t* faces, double* barycentric);
+/// The first surface point of each ray (origins and directions k x 3, directions nonzero), or face -1 and NaN.
+void locate_rays(const Geodesic_surface& s, const Point_locator& l, const double* origins, const double* directions,
+                 std::size_t k, std::int64_t* faces, double* barycentric);
+
+/// One iso-distance curve: its level, whether closed, its points (x, y, z, x, y, z, ...).
+struct Iso_curve
+{
+  double level = 0;
+  bool closed = false;
+  std::vector<double> points;
+};
+/// The iso-distance curves of vertex distances on the caller's arrays (checked by the caller), by increasing level.
+std::vector<Iso_curve> iso_curves(const double* vertices, std::size_t n, const std::int64_t* faces, std::size_t m,
+                                  const double* distances, const std::vector<double>& levels);
 
 } // namespace mdcs_python
 

@@ -161,14 +161,19 @@ struct Thread_solver
   Geodesic_solver* solver = nullptr;
 };
 
-// Returns a solver to the pool when the scope ends (also on exceptions).
+// Returns a solver to the pool when the scope ends (also on exceptions), sequential again: a row of a distance
+// matrix must not start a parallel propagation inside the matrix's own parallel loop.
 struct Pooled_solver
 {
   const Geodesic_surface& surface;
   Solver_kind kind;
   std::unique_ptr<Geodesic_solver> solver;
   Pooled_solver(const Geodesic_surface& s, const Solver_kind& k) : surface(s), kind(k), solver(s.acquire(k)) {}
-  ~Pooled_solver() { surface.release(kind, std::move(solver)); }
+  ~Pooled_solver()
+  {
+    solver->set_threads(1);
+    surface.release(kind, std::move(solver));
+  }
 };
 
 py::dict statistics_dict(const CGAL::Polyhedral_geodesics_3::Geodesic_statistics& st)
@@ -239,9 +244,10 @@ public:
   // Distances of every vertex (or of `targets`) to the nearest source.
   py::tuple distances(py::handle sources, py::handle source_faces, py::handle source_barycentric, const std::string& method,
                       double tolerance, py::handle max_distance, py::handle targets, bool stop_at_targets,
-                      bool want_nearest, py::object progress)
+                      bool want_nearest, py::handle threads_object, py::object progress)
   {
     const Geodesic_surface& s = *surface_;
+    const std::size_t threads = checked_thread_count(threads_object);
     const Source_set set = read_sources(s, sources, source_faces, source_barycentric);
     const double limit = pruning_limit(number_or(max_distance, "max_distance", infinity, 0, false));
     std::vector<std::int64_t> target_list;
@@ -264,6 +270,7 @@ public:
           for(std::int64_t u : target_list)
             for(std::size_t c : s.mesh_vertices(std::size_t(u))) stop.push_back(c);
         solver.set_stop_targets(stop);
+        solver.set_threads(threads);
         solver.compute(bridge);
       }
       std::vector<double> mesh_d;
@@ -290,8 +297,9 @@ public:
   // Distances from each source to every vertex (or to `targets`): dense rows, or the entries <= max_distance.
   py::object distance_matrix(py::handle sources, py::handle source_faces, py::handle source_barycentric,
                              py::handle targets, const std::string& method, double tolerance, py::handle max_distance,
-                             bool sparse, std::size_t threads, py::object progress)
+                             bool sparse, py::handle threads_object, py::object progress)
   {
+    const std::size_t threads = checked_thread_count(threads_object);
     const Geodesic_surface& s = *surface_;
     const Source_set set = read_sources(s, sources, source_faces, source_barycentric);
     const double limit = pruning_limit(number_or(max_distance, "max_distance", infinity, 0, false));
@@ -404,9 +412,84 @@ public:
   // The distance limit to give a solver: infinity when `limit` cannot prune anything (see the constructor).
   double pruning_limit(double limit) const { return limit >= pruning_bound_ ? infinity : limit; }
 
+  // The surface points closest to 3D points (k x 3): (faces, barycentric) in the caller's indices and corner order.
+  py::tuple locate(py::handle points_object)
+  {
+    const Double_array points = checked_doubles(points_object, "points", 2, 3, true, "(k, 3)");
+    const std::size_t k = std::size_t(points.shape(0));
+    std::vector<std::int64_t> faces(k);
+    std::vector<double> barycentric(3 * k);
+    const double* p = points.data();
+    {
+      py::gil_scoped_release release;
+      mdcs_python::locate_points(*surface_, locator(), p, k, faces.data(), barycentric.data());
+    }
+    return py::make_tuple(to_numpy(std::move(faces)), to_numpy(std::move(barycentric), py::ssize_t(k), 3));
+  }
+
+  // The first surface point of each ray: face -1 and NaN where a ray misses.
+  py::tuple locate_rays(py::handle origins_object, py::handle directions_object)
+  {
+    const Double_array origins = checked_doubles(origins_object, "origins", 2, 3, true, "(k, 3)");
+    const Double_array directions = checked_doubles(directions_object, "directions", 2, 3, true, "(k, 3)");
+    if(origins.shape(0) != directions.shape(0))
+      throw Value_error("mdcs: origins and directions must have the same number of rows, got " +
+                        shape_text(origins) + " and " + shape_text(directions));
+    const std::size_t k = std::size_t(origins.shape(0));
+    const double* d = directions.data();
+    for(std::size_t i = 0; i < k; ++i)
+      if(d[3 * i] == 0 && d[3 * i + 1] == 0 && d[3 * i + 2] == 0)
+        throw Value_error("mdcs: directions[" + std::to_string(i) + "] is the zero vector");
+    std::vector<std::int64_t> faces(k);
+    std::vector<double> barycentric(3 * k);
+    const double* o = origins.data();
+    {
+      py::gil_scoped_release release;
+      mdcs_python::locate_rays(*surface_, locator(), o, d, k, faces.data(), barycentric.data());
+    }
+    return py::make_tuple(to_numpy(std::move(faces)), to_numpy(std::move(barycentric), py::ssize_t(k), 3));
+  }
+
+  // The AABB tree of locate(), built at the first call (then shared by every thread).
+  const Point_locator& locator()
+  {
+    std::call_once(locator_once_, [this] { locator_ = make_point_locator(*surface_); });
+    return *locator_;
+  }
+
   std::shared_ptr<const Geodesic_surface> surface_;
   double pruning_bound_ = infinity;
+  std::once_flag locator_once_;
+  std::shared_ptr<const Point_locator> locator_;
 };
+
+// Iso-distance curves of vertex distances on the caller's arrays: a list of (level, closed, points (k, 3)).
+py::list iso_distance_curves(py::handle vertices, py::handle faces, py::handle distances_object, py::handle levels_object)
+{
+  const auto arrays = checked_mesh_arrays(vertices, faces);
+  const std::size_t n = std::size_t(arrays.first.shape(0)), m = std::size_t(arrays.second.shape(0));
+  const Double_array distances = checked_doubles(distances_object, "distances", 1, -1, false, "(n,)");
+  if(std::size_t(distances.shape(0)) != n)
+    throw Value_error("mdcs: distances must have one value per vertex (" + std::to_string(n) + "), got " +
+                      shape_text(distances));
+  const double* d = distances.data();
+  for(std::size_t i = 0; i < n; ++i)
+    if(std::isnan(d[i]) || d[i] == -infinity)
+      throw Value_error("mdcs: distances[" + std::to_string(i) + "] is not a number or +inf (unreachable)");
+  const Double_array levels_array = checked_doubles(levels_object, "levels", 1, -1, true, "(k,)");
+  const std::vector<double> levels(levels_array.data(), levels_array.data() + levels_array.shape(0));
+  std::vector<Iso_curve> curves;
+  {
+    py::gil_scoped_release release;
+    curves = iso_curves(arrays.first.data(), n, arrays.second.data(), m, d, levels);
+  }
+  py::list out;
+  for(Iso_curve& c : curves) {
+    const py::ssize_t k = py::ssize_t(c.points.size() / 3);
+    out.append(py::make_tuple(c.level, c.closed, to_numpy(std::move(c.points), k, 3)));
+  }
+  return out;
+}
 
 // A computed distance field (full field): vertex distances, distances at surface points, shortest paths.
 class Py_field
@@ -556,13 +639,18 @@ void bind_geodesics(py::module_& m)
     .def_property_readonly("mean_edge_length", [](const Py_surface& p) { return p.surface().mean_edge_length(); })
     .def("distances", &Py_surface::distances, py::arg("sources"), py::arg("source_faces"),
          py::arg("source_barycentric"), py::arg("method"), py::arg("tolerance"), py::arg("max_distance"),
-         py::arg("targets"), py::arg("stop_at_targets"), py::arg("nearest"), py::arg("progress"))
+         py::arg("targets"), py::arg("stop_at_targets"), py::arg("nearest"), py::arg("threads"), py::arg("progress"))
     .def("distance_matrix", &Py_surface::distance_matrix, py::arg("sources"), py::arg("source_faces"),
          py::arg("source_barycentric"), py::arg("targets"), py::arg("method"), py::arg("tolerance"),
          py::arg("max_distance"), py::arg("sparse"), py::arg("threads"), py::arg("progress"))
+    .def("locate", &Py_surface::locate, py::arg("points"))
+    .def("locate_rays", &Py_surface::locate_rays, py::arg("origins"), py::arg("directions"))
     .def("_cpp_distances_seconds", &Py_surface::cpp_distances_seconds, py::arg("source"), py::arg("method"),
          py::arg("repeats"), py::arg("with_progress") = false,
          "Benchmark anchor: (wall, thread CPU) seconds of the same computation as distances(source), timed in C++.");
+
+  g.def("iso_distance_curves", &iso_distance_curves, py::arg("vertices"), py::arg("faces"), py::arg("distances"),
+        py::arg("levels"));
 
   py::class_<Py_field>(g, "Field", "A computed geodesic distance field (see mdcs.geodesics.GeodesicField).")
     .def(py::init<const Py_surface&, py::handle, py::handle, py::handle, const std::string&, double, py::handle, bool,

@@ -336,3 +336,126 @@ def test_statistics_and_field_attributes(bumpy):
     assert s["windows_created"] > 0 and s["stored_windows"] == 0 and s["peak_memory_bytes"] > 0
     assert field.distances.flags.writeable is False
     assert "exact" in repr(field)
+
+
+def test_parallel_single_source_distances_do_not_depend_on_the_thread_count():
+    V, F = bumpy_sphere(5)  # 10,242 vertices: many rounds of the parallel schedule
+    mesh = mdcs.Mesh(V, F)
+    sequential = mesh.distances(7, progress=False)
+    parallel = [mesh.distances(7, threads=t, progress=False) for t in (2, 3, 8, 0)]
+    for d in parallel[1:]:
+        assert np.array_equal(d, parallel[0])  # bit for bit
+    np.testing.assert_allclose(parallel[0], sequential, rtol=1e-13, atol=0)
+    # the pooled solver goes back to the sequential schedule: the next default call is the sequential result
+    assert np.array_equal(mesh.distances(7, progress=False), sequential)
+    # with a distance limit and with several sources, the same rule
+    limited = [mesh.distances([7, 5000], threads=t, max_distance=1.0, progress=False) for t in (2, 8)]
+    assert np.array_equal(limited[0], limited[1])
+    np.testing.assert_allclose(limited[0], mesh.distances([7, 5000], max_distance=1.0, progress=False), rtol=1e-13)
+    # the other methods accept the option and run on one thread
+    fmm = mesh.distances(7, method="fast_marching", progress=False)
+    assert np.array_equal(mesh.distances(7, method="fast_marching", threads=4, progress=False), fmm)
+
+
+@pytest.mark.parametrize("bad", [-1, 1025, 1.5, True, "2", None])
+def test_thread_counts_are_checked(flat, bad):
+    mesh = flat[0]
+    with pytest.raises(ValueError, match="threads"):
+        mesh.distances(0, threads=bad, progress=False)
+    with pytest.raises(ValueError, match="threads"):
+        mesh.distance_matrix([0, 1], threads=bad, progress=False)
+
+
+def surface_point(V, F, faces, barycentric):
+    return np.einsum("ki,kij->kj", barycentric, V[F[faces]])
+
+
+def test_locate_points_on_a_flat_mesh_and_use_them_as_sources(flat):
+    mesh, V, F = flat
+    rng = np.random.default_rng(4)
+    inside = np.c_[rng.uniform(0, 1.4, 50), rng.uniform(0, 1.1, 50), rng.uniform(-0.5, 0.5, 50)]
+    located = mesh.locate(inside)
+    assert located.faces.shape == (50,) and located.barycentric.shape == (50, 3)
+    assert np.all(located.barycentric >= -1e-12)
+    np.testing.assert_allclose(located.barycentric.sum(axis=1), 1, atol=1e-12)
+    # the closest point of a plane is the orthogonal projection
+    np.testing.assert_allclose(surface_point(V, F, located.faces, located.barycentric),
+                               np.c_[inside[:, :2], np.zeros(50)], atol=1e-12)
+    # beyond the border: the closest border point (clamped coordinates)
+    outside = np.array([[-1.0, 0.5, 0.3], [2.0, 2.0, 0.0], [0.7, -3.0, -1.0]])
+    o = mesh.locate(outside)
+    np.testing.assert_allclose(surface_point(V, F, o.faces, o.barycentric),
+                               [[0, 0.5, 0], [1.4, 1.1, 0], [0.7, 0, 0]], atol=1e-12)
+    # one point as a (3,) array; located points as sources and as query points
+    single = mesh.locate([0.35, 0.6, 1.0])
+    assert single.faces.shape == (1,)
+    d = mesh.distances(source_points=single, progress=False)
+    np.testing.assert_allclose(d, np.linalg.norm(V - [0.35, 0.6, 0], axis=1), atol=1e-12)
+    field = mesh.field(0, progress=False)
+    at, _ = field.distance_at(located)
+    np.testing.assert_allclose(at, np.linalg.norm(inside[:, :2], axis=1), atol=1e-12)
+
+
+def test_locate_points_on_a_curved_mesh_against_every_vertex(bumpy):
+    mesh, V, F = bumpy
+    rng = np.random.default_rng(5)
+    q = rng.normal(size=(40, 3)) * 1.3
+    located = mesh.locate(q)
+    p = surface_point(V, F, located.faces, located.barycentric)
+    gap = np.linalg.norm(p - q, axis=1)
+    # no vertex (a surface point too) is closer than the located point
+    nearest_vertex = np.min(np.linalg.norm(q[:, None, :] - V[None, :, :], axis=2), axis=1)
+    assert np.all(gap <= nearest_vertex + 1e-12)
+
+
+def test_locate_rays(flat, bumpy):
+    mesh, V, F = flat
+    origins = np.array([[0.3, 0.4, 1.0], [0.3, 0.4, -2.0], [0.3, 0.4, 1.0], [5.0, 5.0, 1.0]])
+    directions = np.array([[0, 0, -1], [0.1, 0.2, 1.0], [0, 0, 1], [0, 0, -1]], dtype=float)
+    hit = mesh.locate_rays(origins, directions)
+    np.testing.assert_array_equal(hit.faces[2:], [-1, -1])  # pointing away; beside the mesh
+    assert np.all(np.isnan(hit.barycentric[2:]))
+    np.testing.assert_allclose(surface_point(V, F, hit.faces[:2], hit.barycentric[:2]),
+                               [[0.3, 0.4, 0], [0.5, 0.8, 0]], atol=1e-12)
+    # on the sphere, a ray from the centre hits the surface along its direction, once
+    bm, BV, BF = bumpy
+    d = np.random.default_rng(6).normal(size=(30, 3))
+    h = bm.locate_rays(np.zeros((30, 3)), d)
+    assert np.all(h.faces >= 0)
+    p = surface_point(BV, BF, h.faces, h.barycentric)
+    cross = np.cross(p, d / np.linalg.norm(d, axis=1)[:, None])
+    assert np.max(np.linalg.norm(cross, axis=1)) < 1e-12 and np.all(np.einsum("ij,ij->i", p, d) > 0)
+    with pytest.raises(ValueError, match="zero vector"):
+        mesh.locate_rays([[0, 0, 1]], [[0, 0, 0]])
+    with pytest.raises(ValueError, match="same number of rows"):
+        mesh.locate_rays(np.zeros((2, 3)), np.ones((3, 3)))
+    with pytest.raises(ValueError):
+        mesh.locate([[0, np.nan, 0]])
+
+
+def test_iso_distance_curves_are_circles_on_a_flat_mesh():
+    V, F = grid_mesh(61, 61, size=(1.0, 1.0))
+    mesh = mdcs.Mesh(V, F)
+    center = 30 * 61 + 30  # the vertex at (0.5, 0.5)
+    field = mesh.field(center, progress=False)
+    curves = field.iso_distance_curves([0.2, 0.3, 0.6])
+    assert [c.level for c in curves[:2]] == [0.2, 0.3]
+    for c in curves[:2]:  # inside the square: one closed circle each
+        assert c.closed and c.points.shape[1] == 3
+        r = np.linalg.norm(c.points - V[center], axis=1)
+        # |x - centre| is convex: its linear interpolation on an edge (length <= sqrt(2) h, h = 1/60) is above it,
+        # by at most length^2 / (8 r), so the crossing is that much closer to the centre, never farther
+        assert np.all(r <= c.level + 1e-12) and np.all(r >= c.level - 2 * (1 / 60) ** 2 / (8 * 0.9 * c.level))
+    # 0.6 leaves the square: four open arcs ending on the border
+    arcs = [c for c in curves if c.level == 0.6]
+    assert len(arcs) == 4 and not any(c.closed for c in arcs)
+    for c in arcs:
+        for end in (c.points[0], c.points[-1]):
+            assert min(end[0], end[1], 1 - end[0], 1 - end[1]) < 1e-12
+    assert mesh.iso_distance_curves(field.distances, 5.0) == []  # beyond every value
+    with pytest.raises(ValueError, match="one value per vertex"):
+        mesh.iso_distance_curves(field.distances[:-1], [0.2])
+    bad = field.distances.copy()
+    bad[3] = np.nan
+    with pytest.raises(ValueError, match="distances"):
+        mesh.iso_distance_curves(bad, [0.2])
