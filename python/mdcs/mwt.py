@@ -76,7 +76,7 @@ class MwtResult:
 def minimum_weight_triangulation(points, *, metric="L2", solver="auto", pruning="auto", resolve_fractional=True,
                                  branch_and_bound_time_limit=300.0, certificate_tolerance=1e-9,
                                  integrality_tolerance=1e-6, validate=True, use_lmt_skeleton=False,
-                                 exact_support_certificate=True, progress="auto"):
+                                 exact_support_certificate=True, threads=0, progress="auto"):
     """The minimum weight triangulation of a point set.
 
     Parameters:
@@ -92,6 +92,9 @@ def minimum_weight_triangulation(points, *, metric="L2", solver="auto", pruning=
         validate: check the triangulation with exact predicates.
         use_lmt_skeleton: L2 only: the LMT-skeleton and exact dynamic programs on its faces, the LP on the rest.
         exact_support_certificate: try the exact certificate on the near-zero reduced-cost support.
+        threads: threads of the candidate edges, empty triangles, diamond test, LMT-skeleton and face dynamic
+            programs (0, the default: every core; 1: sequential; the LP stays sequential). The triangulation,
+            weight and certificate are identical for every thread count.
         progress: ``"auto"``, ``True``, ``False``/``None`` or a callable (see :mod:`mdcs._progress`).
 
     Returns:
@@ -102,5 +105,6 @@ def minimum_weight_triangulation(points, *, metric="L2", solver="auto", pruning=
         d = _mdcs.mwt.minimum_weight_triangulation(points, metric, pruning, solver, bool(resolve_fractional),
                                                    float(branch_and_bound_time_limit), float(certificate_tolerance),
                                                    float(integrality_tolerance), bool(validate),
-                                                   bool(use_lmt_skeleton), bool(exact_support_certificate), callback)
+                                                   bool(use_lmt_skeleton), bool(exact_support_certificate), threads,
+                                                   callback)
     return MwtResult(**d)

@@ -281,7 +281,7 @@ def _boundary_values(g, samples, name):
 
 def minimal_surface(functional, *, value_range, boundary, domain=None, polygon=None, upper_boundary=None, planes=150,
                     segments=4, seed=1, distribution="slope_limited", max_slope=3.0, pencil_fraction=0.2,
-                    engine="pseudoflow", quadrature_level=1, k_g=1.0, z_bottom=None, progress="auto"):
+                    engine="pseudoflow", quadrature_level=1, k_g=1.0, z_bottom=None, threads=0, progress="auto"):
     """The globally minimal discrete surface of a bivariate problem (see the module documentation).
 
     Parameters:
@@ -299,6 +299,9 @@ def minimal_surface(functional, *, value_range, boundary, domain=None, polygon=N
         engine: ``"pseudoflow"`` (default), ``"push_relabel"``, ``"boykov_kolmogorov"``.
         quadrature_level: subdivisions of the facet quadrature (0..8) for functionals without a closed form.
         k_g, z_bottom: the membrane's weight per unit height and its reference height (default zmin).
+        threads: for ``"area"`` and ``"membrane"``: threads of the facet weights (0, the default: every core; 1:
+            sequential); the weights, hence the surface, are identical for every count. A callable functional is
+            evaluated in Python, on one thread.
         progress: as everywhere in mdcs.
 
     Returns:
@@ -315,7 +318,8 @@ def minimal_surface(functional, *, value_range, boundary, domain=None, polygon=N
                                                float(pencil_fraction), callback)
         if isinstance(functional, str):
             z = float("nan") if z_bottom is None else float(z_bottom)
-            result = arrangement.solve_builtin(functional, float(k_g), z, int(quadrature_level), engine, callback)
+            result = arrangement.solve_builtin(functional, float(k_g), z, int(quadrature_level), engine, threads,
+                                               callback)
         elif callable(functional):
             if not 0 <= int(quadrature_level) <= 8:
                 raise ValueError("mdcs: quadrature_level must be in [0, 8]")

@@ -78,8 +78,9 @@ py::dict minimum_weight_triangulation(py::handle points, const std::string& metr
                                       const std::string& solver, bool resolve_fractional,
                                       double branch_and_bound_time_limit, double certificate_tolerance,
                                       double integrality_tolerance, bool validate, bool use_lmt_skeleton,
-                                      bool exact_support_certificate, py::object progress)
+                                      bool exact_support_certificate, py::handle threads, py::object progress)
 {
+  const std::size_t thread_count = checked_thread_count(threads);
   const Double_array P = checked_doubles(points, "points", 2, 2, true, "(n, 2)");
   const std::size_t n = std::size_t(P.shape(0));
   if(n < 3) throw Value_error("mdcs: a triangulation needs at least 3 points, got " + std::to_string(n));
@@ -99,13 +100,18 @@ py::dict minimum_weight_triangulation(py::handle points, const std::string& metr
   options.validate = validate;
   options.use_lmt_skeleton = use_lmt_skeleton;
   options.exact_support_certificate = exact_support_certificate;
+  options.threads = thread_count;
   std::vector<Point_2> pts;
   pts.reserve(n);
   for(std::size_t i = 0; i < n; ++i) pts.emplace_back(P.data()[2 * i], P.data()[2 * i + 1]);
 
   Progress_bridge bridge(progress);
   options.progress = [&bridge](const char* stage, double fraction) { return bridge(stage, fraction); };
-  MWT::Mwt_result r = run_without_gil(bridge, [&] { return MWT::minimum_weight_triangulation_2(pts, options); });
+  // The parallel pipeline gives the same triangulation, weight and certificate for every thread count.
+  MWT::Mwt_result r = run_without_gil(bridge, [&] {
+    return thread_count == 1 ? MWT::minimum_weight_triangulation_2(pts, options)
+                             : MWT::minimum_weight_triangulation_2<CGAL::Parallel_if_available_tag>(pts, options);
+  });
   // A cancelled branch and bound ends with a status instead of an exception: report the interruption.
   if(bridge.has_stashed_error()) bridge.raise_stashed_error();
   if(bridge.stopped()) throw Cancelled_error("mdcs: the minimum weight triangulation was cancelled by the progress callback");
@@ -138,7 +144,7 @@ void bind_mwt(py::module_& m)
   w.def("minimum_weight_triangulation", &minimum_weight_triangulation, py::arg("points"), py::arg("metric"),
         py::arg("pruning"), py::arg("solver"), py::arg("resolve_fractional"), py::arg("branch_and_bound_time_limit"),
         py::arg("certificate_tolerance"), py::arg("integrality_tolerance"), py::arg("validate"),
-        py::arg("use_lmt_skeleton"), py::arg("exact_support_certificate"), py::arg("progress"));
+        py::arg("use_lmt_skeleton"), py::arg("exact_support_certificate"), py::arg("threads"), py::arg("progress"));
   py::list solvers;
   solvers.append("auto");
   for(const char* name : {"clp", "glpk", "exact"})

@@ -213,22 +213,26 @@ public:
     });
   }
 
+  // The facet weights on `threads` threads (identical for every count; the max-flow is sequential).
   py::dict solve_builtin(const std::string& name, double k_g, double z_bottom, int quadrature_level,
-                         const std::string& engine, py::object progress) const
+                         const std::string& engine, py::handle threads_object, py::object progress) const
   {
     if(quadrature_level < 0 || quadrature_level > 8) throw Value_error("mdcs: quadrature_level must be in [0, 8]");
+    const std::size_t threads = checked_thread_count(threads_object);
     Progress_bridge bridge(progress);
     if(name == "area")
       return solve_with(engine, bridge, [&](auto e) {
-        return VM::minimize_surface_functional_3(*arrangement_, problem_, VM::Area_functional_3(), quadrature_level, e,
-                                                 std::ref(bridge));
+        return VM::minimize_surface_functional_3<CGAL::Parallel_if_available_tag>(
+          *arrangement_, problem_, VM::Area_functional_3(), quadrature_level, threads, e, std::ref(bridge));
       });
     if(name == "membrane") {
       VM::Membrane_functional_3 G;
       G.k_g = checked_number(py::float_(k_g), "k_g", 0, false);
       G.z_bottom = std::isnan(z_bottom) ? problem_.zmin : z_bottom;
       return solve_with(engine, bridge, [&](auto e) {
-        return VM::minimize_surface_functional_3(*arrangement_, problem_, G, quadrature_level, e, std::ref(bridge));
+        return VM::minimize_surface_functional_3<CGAL::Parallel_if_available_tag>(*arrangement_, problem_, G,
+                                                                                 quadrature_level, threads, e,
+                                                                                 std::ref(bridge));
       });
     }
     throw Value_error("mdcs: unknown surface functional '" + name + "'; use 'area' or 'membrane'");
@@ -260,7 +264,7 @@ void bind_variational_surfaces(py::module_& m)
     .def("weight_facets", &Py_surface_arrangement::weight_facets)
     .def("solve", &Py_surface_arrangement::solve, py::arg("weights"), py::arg("engine"), py::arg("progress"))
     .def("solve_builtin", &Py_surface_arrangement::solve_builtin, py::arg("name"), py::arg("k_g"), py::arg("z_bottom"),
-         py::arg("quadrature_level"), py::arg("engine"), py::arg("progress"));
+         py::arg("quadrature_level"), py::arg("engine"), py::arg("threads"), py::arg("progress"));
 }
 
 } // namespace mdcs_python

@@ -71,3 +71,17 @@ def test_metrics_and_the_lmt_skeleton():
         # the L2 optimum is a triangulation too: never lighter in this metric than the metric's own optimum
         assert r.weight <= weight(p, l2.triangles, metric) + 1e-12
     assert len(l2.edges) == 3 * len(p) - len(scipy.spatial.ConvexHull(p).vertices) - 3
+
+
+def test_the_same_triangulation_for_every_thread_count():
+    p = np.random.default_rng(11).random((3000, 2))
+    # the LMT-skeleton pipeline on 3000 points, the LP alone on 300 (its LP is the slow part, and sequential)
+    for points, lmt in ((p, True), (p[:300], False)):
+        results = [mdcs.mwt.minimum_weight_triangulation(points, use_lmt_skeleton=lmt, threads=t, progress=False)
+                   for t in (1, 2, 3, 8, 0)]
+        for r in results:
+            assert r.status == "certified_optimal"
+            assert np.array_equal(r.triangles, results[0].triangles) and r.weight == results[0].weight
+    for bad in (-1, 2000, 2.0):
+        with pytest.raises(ValueError, match="threads"):
+            mdcs.mwt.minimum_weight_triangulation(p[:10], threads=bad, progress=False)

@@ -88,3 +88,14 @@ def test_polygonal_domain_and_free_boundary():
     assert s.energy == pytest.approx(0.75, rel=1e-9)  # the flat surface at height 0.3
     free = V.minimal_surface("area", value_range=(0, 1), boundary=0.1, upper_boundary=0.9, planes=30, progress=False)
     assert free.energy == pytest.approx(1.0, rel=1e-9)
+
+
+def test_builtin_surface_functionals_give_the_same_surface_for_every_thread_count():
+    kwargs = dict(domain=(-1, -1, 1, 1), value_range=(-1.1, 1.1), boundary=lambda x, y: x * y, planes=50,
+                  progress=False)
+    for functional in ("area", "membrane"):
+        runs = [V.minimal_surface(functional, threads=t, **kwargs) for t in (1, 2, 8)]
+        for s in runs[1:]:
+            assert s.energy == runs[0].energy and np.array_equal(s.facets, runs[0].facets)
+    with pytest.raises(ValueError, match="threads"):
+        V.minimal_surface("area", threads=-2, **kwargs)
