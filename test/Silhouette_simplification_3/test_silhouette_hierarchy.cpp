@@ -10,6 +10,7 @@
 
 #include <CGAL/Silhouette_simplification_3/Silhouette_edge_hierarchy_3.h>
 #include <CGAL/Silhouette_simplification_3/silhouette_edges.h>
+#include <CGAL/Silhouette_simplification_3/Silhouette_simplifier_3.h>
 
 using namespace silhouette_test;
 namespace SSH = CGAL::Silhouette_simplification_3;
@@ -159,6 +160,32 @@ TEST_CASE("Silhouette_edge_hierarchy_3: a real mesh and Polyhedron_3", "[silhoue
     SSH::silhouette_halfedges(poly, view, std::back_inserter(expected));
     hierarchy.silhouette_halfedges(view, std::back_inserter(got));
     REQUIRE(got == expected);
+  }
+}
+
+TEST_CASE("Silhouette_simplifier_3 with a silhouette hierarchy: the same frames", "[silhouette][hierarchy]")
+{
+  // The mesh as its own coarse mesh (identity face map): extraction, loops, picking and mapping must not change.
+  const Mesh m = make<Mesh>(noisy_sphere(3, 0.1, 13));
+  std::vector<std::uint32_t> identity(num_faces(m));
+  for(std::uint32_t i = 0; i < identity.size(); ++i) identity[i] = i;
+  SSH::Silhouette_simplifier_3<Mesh> plain(m, m, identity), fast(m, m, identity);
+  fast.build_silhouette_hierarchy();
+  REQUIRE(fast.uses_silhouette_hierarchy());
+  REQUIRE(!plain.uses_silhouette_hierarchy());
+  for(const Hierarchy_view& view : hierarchy_test_views(m, 16, 14)) {
+    SSH::Silhouette_frame a, b;
+    plain.extract(view, a);
+    fast.extract(view, b);
+    REQUIRE(b.fine_front.empty());
+    REQUIRE(a.fine_silhouette == b.fine_silhouette);
+    REQUIRE(a.fine_loops.size() == b.fine_loops.size());
+    plain.pick_loops(a);
+    fast.pick_loops(b);
+    REQUIRE(a.picked_halfedges() == b.picked_halfedges());
+    plain.map_loops(a);
+    fast.map_loops(b);
+    REQUIRE(a.mapped_halfedges() == b.mapped_halfedges());
   }
 }
 

@@ -27,7 +27,7 @@ namespace Silhouette_simplification_3 {
 struct Silhouette_hierarchy_options
 {
   /// Largest number of edges in a leaf (1 to 127).
-  std::size_t leaf_edges = 8;
+  std::size_t leaf_edges = 16;
   /// Weight of the edge midpoints (divided by the bounding box diagonal) against the unit edge normals when
   /// a node is split along the widest of these six coordinates (non-negative, finite).
   double position_weight = 1.0;
