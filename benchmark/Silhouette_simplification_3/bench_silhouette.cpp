@@ -15,6 +15,7 @@
 //   (coarse 1,000), bunny00.off as is (75k faces, coarse 1,000), and armadillo.off (52k faces, coarse
 //   1,000). --large adds bunny00.off after two Loop subdivisions (~1.2M faces, coarse 1,000). --mesh FILE adds a mesh of your own.
 #include <mdcs_bench.h>
+#include <silhouette_bench_meshes.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -116,17 +117,7 @@ int main(int argc, char** argv)
   };
   for(const Case& c : cases) {
     Mesh fine;
-    if(!CGAL::IO::read_polygon_mesh(c.path, fine) || num_faces(fine) == 0) {
-      std::fprintf(stderr, "cannot read %s, skipped\n", c.path.c_str());
-      continue;
-    }
-    if(c.fine_faces > 0 && num_faces(fine) > c.fine_faces) {
-      SS::Coarse_mesh_options o;
-      o.target_faces = c.fine_faces;
-      o.smoothing_iterations = 0;
-      fine = SS::build_coarse_mesh(fine, o).mesh;
-    }
-    for(unsigned s = 0; s < c.subdivisions; ++s) CGAL::Subdivision_method_3::Loop_subdivision(fine);
+    if(!mdcs_bench::read_silhouette_bench_mesh(c.path, c.fine_faces, c.subdivisions, fine)) continue;
     const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(fine);
 
     double t0 = mdcs_bench::now_seconds();
