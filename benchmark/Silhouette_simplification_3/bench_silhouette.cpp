@@ -42,13 +42,7 @@ typedef CGAL::Surface_mesh<Point_3> Mesh;
 namespace SS = CGAL::Silhouette_simplification_3;
 typedef SS::View_3<K> View;
 
-struct Case
-{
-  std::string name, path;
-  std::size_t fine_faces = 0; // 0: as read
-  unsigned subdivisions = 0;
-  std::size_t coarse_faces = 1000;
-};
+typedef mdcs_bench::Silhouette_bench_case Case;
 
 // Perspective views on a circle around the vertical axis (y for these models), slightly above.
 static View orbit(const CGAL::Bbox_3& b, double angle)
@@ -109,12 +103,7 @@ int main(int argc, char** argv)
   mdcs_bench::Table scaling({"mesh", "fine_faces", "frames", "remedy", "threads", "wall_s", "cpu_s", "speedup", "efficiency",
                              "cpu_ratio", "cpu_speedup", "cpu_efficiency",
                              "serial_fraction", "projected_16_threads_s", "identical", "load"});
-  const auto load_line = [] {
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a + " " + b + " " + c;
-  };
+  const auto load_line = mdcs_bench::load_average;
   for(const Case& c : cases) {
     Mesh fine;
     if(!mdcs_bench::read_silhouette_bench_mesh(c.path, c.fine_faces, c.subdivisions, fine)) continue;

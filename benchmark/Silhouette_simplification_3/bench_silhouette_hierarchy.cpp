@@ -37,12 +37,7 @@ typedef CGAL::Surface_mesh<Point_3> Mesh;
 namespace SS = CGAL::Silhouette_simplification_3;
 typedef SS::View_3<K> View;
 
-struct Case
-{
-  std::string name, path;
-  std::size_t fine_faces = 0; // 0: as read
-  unsigned subdivisions = 0;
-};
+typedef mdcs_bench::Silhouette_bench_case Case;
 
 // A deterministic pseudo-random number in [0, 1).
 static double hash01(std::uint64_t i)
@@ -51,14 +46,6 @@ static double hash01(std::uint64_t i)
   i = (i ^ (i >> 27)) * 0x94d049bb133111ebULL;
   i ^= i >> 31;
   return double(i >> 11) / double(1ULL << 53);
-}
-
-static std::string load_average()
-{
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  in >> a >> b >> c;
-  return a + " " + b + " " + c;
 }
 
 int main(int argc, char** argv)
@@ -165,7 +152,7 @@ int main(int argc, char** argv)
                      fmt(median(silhouette), "%.0f"), std::to_string(mismatches), fmt(construct, "%.3f"),
                      fmt(tree_build, "%.3f"), fmt(double(tree.memory_bytes()) / (1 << 20), "%.1f"), fmt(mesh_mib, "%.1f"),
                      std::to_string(tree.number_of_nodes()), std::to_string(tree.number_of_edges_outside_the_tree()),
-                     load_average()});
+                     mdcs_bench::load_average()});
       std::printf("  %s %s: scan %.4f ms, hierarchy %.4f ms (x%.2f), %0.f edges tested of %zu, %zu mismatches\n",
                   c.name.c_str(), kind == 0 ? "perspective" : "orthographic", ms_scan, ms_tree, ms_scan / ms_tree,
                   median(tested), std::size_t(num_edges(mesh)), mismatches);

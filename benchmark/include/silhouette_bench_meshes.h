@@ -8,9 +8,28 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <cstdio>
+#include <fstream>
 #include <string>
 
 namespace mdcs_bench {
+
+// One mesh of a silhouette benchmark.
+struct Silhouette_bench_case
+{
+  std::string name, path;
+  std::size_t fine_faces = 0; // 0: as read
+  unsigned subdivisions = 0;
+  std::size_t coarse_faces = 1000; // for the benchmarks that build a coarse mesh
+};
+
+// The three load averages of /proc/loadavg, to be reported with timings taken on a shared machine.
+inline std::string load_average()
+{
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  in >> a >> b >> c;
+  return a + " " + b + " " + c;
+}
 
 // Reads `path` into `mesh`; with `faces` > 0 simplifies it to that many faces (no smoothing), then applies
 // `subdivisions` Loop subdivisions. Returns false (with a message) when the file gives no face.
