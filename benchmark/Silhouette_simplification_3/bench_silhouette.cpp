@@ -15,6 +15,7 @@
 //   (coarse 1,000), bunny00.off as is (75k faces, coarse 1,000), and armadillo.off (52k faces, coarse
 //   1,000). --large adds bunny00.off after two Loop subdivisions (~1.2M faces, coarse 1,000). --mesh FILE adds a mesh of your own.
 #include <mdcs_bench.h>
+#include <silhouette_bench_meshes.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -41,13 +42,7 @@ typedef CGAL::Surface_mesh<Point_3> Mesh;
 namespace SS = CGAL::Silhouette_simplification_3;
 typedef SS::View_3<K> View;
 
-struct Case
-{
-  std::string name, path;
-  std::size_t fine_faces = 0; // 0: as read
-  unsigned subdivisions = 0;
-  std::size_t coarse_faces = 1000;
-};
+typedef mdcs_bench::Silhouette_bench_case Case;
 
 // Perspective views on a circle around the vertical axis (y for these models), slightly above.
 static View orbit(const CGAL::Bbox_3& b, double angle)
@@ -108,25 +103,10 @@ int main(int argc, char** argv)
   mdcs_bench::Table scaling({"mesh", "fine_faces", "frames", "remedy", "threads", "wall_s", "cpu_s", "speedup", "efficiency",
                              "cpu_ratio", "cpu_speedup", "cpu_efficiency",
                              "serial_fraction", "projected_16_threads_s", "identical", "load"});
-  const auto load_line = [] {
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a + " " + b + " " + c;
-  };
+  const auto load_line = mdcs_bench::load_average;
   for(const Case& c : cases) {
     Mesh fine;
-    if(!CGAL::IO::read_polygon_mesh(c.path, fine) || num_faces(fine) == 0) {
-      std::fprintf(stderr, "cannot read %s, skipped\n", c.path.c_str());
-      continue;
-    }
-    if(c.fine_faces > 0 && num_faces(fine) > c.fine_faces) {
-      SS::Coarse_mesh_options o;
-      o.target_faces = c.fine_faces;
-      o.smoothing_iterations = 0;
-      fine = SS::build_coarse_mesh(fine, o).mesh;
-    }
-    for(unsigned s = 0; s < c.subdivisions; ++s) CGAL::Subdivision_method_3::Loop_subdivision(fine);
+    if(!mdcs_bench::read_silhouette_bench_mesh(c.path, c.fine_faces, c.subdivisions, fine)) continue;
     const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(fine);
 
     double t0 = mdcs_bench::now_seconds();

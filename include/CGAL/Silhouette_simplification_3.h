@@ -17,6 +17,7 @@
 
 #include <CGAL/Silhouette_simplification_3/View_3.h>
 #include <CGAL/Silhouette_simplification_3/silhouette_edges.h>
+#include <CGAL/Silhouette_simplification_3/Silhouette_edge_hierarchy_3.h>
 #include <CGAL/Silhouette_simplification_3/Silhouette_simplifier_3.h>
 #include <CGAL/Silhouette_simplification_3/silhouette_frames.h>
 #include <CGAL/Silhouette_simplification_3/temporal_coherence.h>

@@ -10,6 +10,7 @@
 #include <CGAL/Silhouette_simplification_3/View_3.h>
 #include <CGAL/Silhouette_simplification_3/internal/Indexed_mesh.h>
 #include <CGAL/Silhouette_simplification_3/internal/silhouette_extraction.h>
+#include <CGAL/Silhouette_simplification_3/internal/Edge_cone_hierarchy.h>
 #include <CGAL/Silhouette_simplification_3/internal/Loop_picker.h>
 #include <CGAL/Silhouette_simplification_3/internal/Loop_mapper.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
@@ -35,7 +36,7 @@ namespace Silhouette_simplification_3 {
 struct Silhouette_frame
 {
   typedef Silhouette_loop<std::uint32_t> Loop;
-  std::vector<char> fine_front, coarse_front;             ///< per face: faces the viewer
+  std::vector<char> fine_front, coarse_front;             ///< per face: faces the viewer (fine_front: empty with a hierarchy)
   std::vector<std::uint32_t> fine_silhouette, coarse_silhouette; ///< silhouette halfedges
   std::vector<Loop> fine_loops, coarse_loops;             ///< their loop decompositions
   std::vector<std::uint32_t> picked;                      ///< method A: indices into `fine_loops`
@@ -156,11 +157,28 @@ public:
   /// A workspace for this simplifier (see `Workspace`).
   Workspace make_workspace() const { return Workspace(*this); }
 
+  /*!
+    \brief Builds a bounding-cone hierarchy over the fine mesh's edges (see `Silhouette_edge_hierarchy_3`): the
+    later calls of `extract_silhouettes()` find the same fine silhouette without classifying every fine face, and
+    leave `Silhouette_frame::fine_front` empty. Not thread-safe with concurrent per-view calls.
+  */
+  void build_silhouette_hierarchy(const Silhouette_hierarchy_options& options = Silhouette_hierarchy_options())
+  {
+    fine_hierarchy_.build(fine_, options);
+    use_hierarchy_ = true;
+  }
+  bool uses_silhouette_hierarchy() const { return use_hierarchy_; }
+
   /// Silhouette extraction (fine and coarse) without decomposition.
   void extract_silhouettes(const View& view, Silhouette_frame& frame) const
   {
-    internal::classify_faces(fine_, view, frame.fine_front);
-    internal::silhouette_from_faces(fine_, frame.fine_front, frame.fine_silhouette);
+    if(use_hierarchy_) {
+      frame.fine_front.clear();
+      fine_hierarchy_.query(fine_, view, frame.fine_silhouette);
+    } else {
+      internal::classify_faces(fine_, view, frame.fine_front);
+      internal::silhouette_from_faces(fine_, frame.fine_front, frame.fine_silhouette);
+    }
     internal::classify_faces(coarse_, view, frame.coarse_front);
     internal::silhouette_from_faces(coarse_, frame.coarse_front, frame.coarse_silhouette);
   }
@@ -332,6 +350,8 @@ private:
   }
 
   Indexed_mesh fine_, coarse_;
+  internal::Edge_cone_hierarchy fine_hierarchy_;
+  bool use_hierarchy_ = false;
   std::vector<halfedge_descriptor> fine_halfedge_;
   std::vector<face_descriptor> fine_face_;
   std::vector<vertex_descriptor> fine_vertex_;
