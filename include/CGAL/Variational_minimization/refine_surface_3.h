@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <random>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -134,12 +135,9 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
   const Arr arrangement(result.planes, CGAL::MDCS::No_progress(), threads);
   internal::Envelope_cut_counts_3 counts;
   result.surface = internal::minimize_in_envelope_3(arrangement, problem, G, envelope, quadrature_level, engine, counts);
-  result.cells = counts.cells;
-  result.cells_below = counts.cells_below;
-  result.cells_above = counts.cells_above;
-  result.cells_outside = counts.cells_outside;
-  result.network_nodes = counts.network_nodes;
-  result.network_facets = counts.network_facets;
+  std::tie(result.cells, result.cells_below, result.cells_above, result.cells_outside, result.network_nodes,
+           result.network_facets) = std::make_tuple(counts.cells, counts.cells_below, counts.cells_above,
+                                                    counts.cells_outside, counts.network_nodes, counts.network_facets);
   reporter.finish();
   return result;
 }

@@ -108,6 +108,24 @@ void add_planes_in_envelope_3(const Surface_problem_3& problem, const Surface_pl
   }
 }
 
+// An interior point of each cell, in world coordinates: the mean of the vertices of its facets.
+inline std::vector<std::array<double, 3>> cell_points_3(const Plane_arrangement_3& arrangement,
+                                                        const Surface_problem_3& problem)
+{
+  typedef Plane_arrangement_3 Arr;
+  std::vector<std::array<double, 3>> out(arrangement.number_of_cells());
+  for(std::size_t c = 0; c < arrangement.number_of_cells(); ++c) {
+    std::array<double, 3> m = {{0, 0, 0}};
+    std::size_t k = 0;
+    for(Arr::Facet_index f : arrangement.cell_facets(Arr::Cell_index(c)))
+      for(std::size_t i = 0; i < arrangement.facet_degree(f); ++i, ++k)
+        for(int j = 0; j < 3; ++j) m[j] += arrangement.point(arrangement.facet_vertex(f, i))[j];
+    for(int j = 0; j < 3; ++j) m[j] /= double(k);
+    out[c] = problem.to_world(m);
+  }
+  return out;
+}
+
 // What minimize_in_envelope_3() classified and solved.
 struct Envelope_cut_counts_3
 {
@@ -131,19 +149,14 @@ Minimal_surface_3 minimize_in_envelope_3(const Plane_arrangement_3& arrangement,
   std::vector<char> label(arrangement.number_of_cells(), 0);
   const double eps = envelope.margin() + 1e-9 * (problem.zmax - problem.zmin);
   const std::vector<char> inside = surface_domain_cells_3(arrangement, problem);
+  const std::vector<std::array<double, 3>> points = cell_points_3(arrangement, problem);
   for(std::size_t c = 0; c < arrangement.number_of_cells(); ++c) {
     if(!inside[c]) {
       label[c] = 1;
       ++counts.cells_outside;
       continue;
     }
-    std::array<double, 3> m = {{0, 0, 0}};
-    std::size_t k = 0;
-    for(Arr::Facet_index f : arrangement.cell_facets(Arr::Cell_index(c)))
-      for(std::size_t i = 0; i < arrangement.facet_degree(f); ++i, ++k)
-        for(int j = 0; j < 3; ++j) m[j] += arrangement.point(arrangement.facet_vertex(f, i))[j];
-    for(int j = 0; j < 3; ++j) m[j] /= double(k);
-    const std::array<double, 3> p = problem.to_world(m);
+    const std::array<double, 3>& p = points[c];
     double lo, hi;
     envelope.band(p[0], p[1], lo, hi);
     if(p[2] < lo - eps) {
