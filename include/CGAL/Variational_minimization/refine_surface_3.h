@@ -9,13 +9,10 @@
 
 #include <CGAL/MDCS/concurrency.h>
 #include <CGAL/MDCS/progress.h>
-#include <CGAL/Min_cut/internal/contract_terminal_nodes.h>
 #include <CGAL/Min_cut/solve_min_cut.h>
 #include <CGAL/Variational_minimization/Minimal_surface_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
-#include <CGAL/Variational_minimization/internal/surface_domain_cells_3.h>
-#include <CGAL/Variational_minimization/internal/surface_dual_network_3.h>
-#include <CGAL/Variational_minimization/internal/surface_height_3.h>
+#include <CGAL/Variational_minimization/internal/surface_envelope_cut_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/surface_facet_weights_3.h>
 #include <CGAL/Variational_minimization/surface_planes_3.h>
@@ -27,6 +24,7 @@
 #include <cstdint>
 #include <random>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -126,101 +124,20 @@ Surface_refinement_result_3 refine_surface_3(const Surface_problem_3& problem, c
     for(std::uint32_t p : s.planes)
       if(p >= Arr::number_of_walls) kept.push_back(planes[p - Arr::number_of_walls]);
   }
-  // Duplicates are harmless (the arrangement drops them), but they would count against n.
-  std::vector<Lattice_plane_3> unique;
-  for(const Lattice_plane_3& p : kept) {
-    const Lattice_plane_3 q = internal::normalized_plane(p);
-    bool seen = false;
-    for(const Lattice_plane_3& u : unique) seen = seen || (u.a == q.a && u.b == q.b && u.c == q.c && u.d == q.d);
-    if(!seen) unique.push_back(q);
-  }
-  result.planes = unique;
-  result.kept_planes = unique.size();
-  std::vector<internal::Surface_height_3> heights;
-  for(const Minimal_surface_3& s : surfaces) heights.emplace_back(s);
-  auto envelope = [&](double x, double y, double& lo, double& hi) {
-    lo = 1e300;
-    hi = -1e300;
-    for(const auto& h : heights) {
-      const double z = h(x, y);
-      lo = (std::min)(lo, z);
-      hi = (std::max)(hi, z);
-    }
-  };
-  // New planes through random points of the widened envelope.
+  result.planes = internal::unique_planes_3(kept);
+  result.kept_planes = result.planes.size();
+  const internal::Surface_envelope_3 envelope(problem, surfaces, margin);
   {
-    const double L = double(Arr::lattice_size);
-    const double sx = (problem.domain.xmax() - problem.domain.xmin()) / L,
-                 sy = (problem.domain.ymax() - problem.domain.ymin()) / L, sz = (problem.zmax - problem.zmin) / L;
     std::mt19937_64 rng(options.seed * 6364136223846793005ull + 1442695040888963407ull);
-    std::uniform_real_distribution<double> U(0, 1), S(-options.max_slope, options.max_slope);
-    std::normal_distribution<double> N;
-    const std::vector<internal::Lattice_point_2> polygon = problem.lattice_polygon();
-    while(result.planes.size() < n) {
-      const double u = U(rng), v = U(rng);
-      if(problem.is_polygonal() && !internal::lattice_polygon_contains(polygon, u * L, v * L)) continue;
-      const double x = problem.domain.xmin() + u * (problem.domain.xmax() - problem.domain.xmin()),
-                   y = problem.domain.ymin() + v * (problem.domain.ymax() - problem.domain.ymin());
-      double lo, hi;
-      envelope(x, y, lo, hi);
-      lo = (std::max)(problem.zmin, lo - margin);
-      hi = (std::min)(problem.zmax, hi + margin);
-      const double z = lo + U(rng) * (hi - lo);
-      const std::array<double, 3> q = {{u * L, v * L, (z - problem.zmin) / sz}};
-      std::array<double, 3> normal;
-      if(options.distribution == Plane_distribution_3::isotropic) normal = {{N(rng), N(rng), N(rng)}};
-      else normal = {{-S(rng) * sx / sz, -S(rng) * sy / sz, 1.0}};
-      if(!(std::abs(normal[0]) + std::abs(normal[1]) + std::abs(normal[2]) > 1e-12)) continue;
-      result.planes.push_back(internal::plane_through(normal, q));
-    }
+    internal::add_planes_in_envelope_3(problem, options, envelope, n, rng, result.planes);
   }
   reporter(std::size_t(runs));
   const Arr arrangement(result.planes, CGAL::MDCS::No_progress(), threads);
-  result.cells = arrangement.number_of_cells();
-  // Cells outside the widened envelope, by an interior point (the mean of the vertices: no s_r crosses a cell),
-  // are contracted into the source (label 1) or the sink (label 2).
-  std::vector<char> label(arrangement.number_of_cells(), 0);
-  const double eps = margin + 1e-9 * (problem.zmax - problem.zmin);
-  // Cells outside a polygonal Ω have no arcs: merging them into the source leaves them out of the network.
-  const std::vector<char> inside = internal::surface_domain_cells_3(arrangement, problem);
-  for(std::size_t c = 0; c < arrangement.number_of_cells(); ++c) {
-    if(!inside[c]) {
-      label[c] = 1;
-      ++result.cells_outside;
-      continue;
-    }
-    std::array<double, 3> m = {{0, 0, 0}};
-    std::size_t k = 0;
-    for(Arr::Facet_index f : arrangement.cell_facets(Arr::Cell_index(c)))
-      for(std::size_t i = 0; i < arrangement.facet_degree(f); ++i, ++k)
-        for(int j = 0; j < 3; ++j) m[j] += arrangement.point(arrangement.facet_vertex(f, i))[j];
-    for(int j = 0; j < 3; ++j) m[j] /= double(k);
-    const std::array<double, 3> p = problem.to_world(m);
-    double lo, hi;
-    envelope(p[0], p[1], lo, hi);
-    if(p[2] < lo - eps) {
-      label[c] = 1;
-      ++result.cells_below;
-    } else if(p[2] > hi + eps) {
-      label[c] = 2;
-      ++result.cells_above;
-    }
-  }
-  // The contracted network is built straight from the arrangement: neither the full network nor a weight vector
-  // exists, and G is integrated only over the facets that can still matter (those touching a cell inside the
-  // envelope, and those between a cell below it and one above it, which every cut crosses).
-  const auto weight_of = [&](Arr::Facet_index f) {
-    return surface_facet_weight_3(arrangement, problem, G, f, quadrature_level);
-  };
-  CGAL::Min_cut::internal::Contracted_network<double> reduced;
-  {
-    CGAL::Min_cut::internal::Terminal_contraction<double> builder(label);
-    internal::build_surface_dual_network_3(arrangement, weight_of, problem, builder);
-    reduced = builder.release();
-  }
-  result.network_nodes = reduced.network.number_of_nodes();
-  result.network_facets = reduced.network.number_of_facets();
-  result.surface = internal::surface_from_contracted_cut_3(arrangement, problem, weight_of, reduced, engine);
+  internal::Envelope_cut_counts_3 counts;
+  result.surface = internal::minimize_in_envelope_3(arrangement, problem, G, envelope, quadrature_level, engine, counts);
+  std::tie(result.cells, result.cells_below, result.cells_above, result.cells_outside, result.network_nodes,
+           result.network_facets) = std::make_tuple(counts.cells, counts.cells_below, counts.cells_above,
+                                                    counts.cells_outside, counts.network_nodes, counts.network_facets);
   reporter.finish();
   return result;
 }

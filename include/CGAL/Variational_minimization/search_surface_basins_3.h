@@ -18,6 +18,7 @@
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/internal/surface_dual_network_3.h>
+#include <CGAL/Variational_minimization/internal/surface_envelope_cut_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
 #include <CGAL/Variational_minimization/select_planes_3.h>
@@ -88,24 +89,6 @@ inline double relaxed_height_3(const Surface_problem_3& problem, const Relaxed_s
   auto at = [&](int p, int q) { return r.heights[std::size_t(q) * std::size_t(n + 1) + std::size_t(p)]; };
   if(a + b <= 1) return at(i, j) + a * (at(i + 1, j) - at(i, j)) + b * (at(i, j + 1) - at(i, j));
   return at(i + 1, j + 1) + (1 - a) * (at(i, j + 1) - at(i + 1, j + 1)) + (1 - b) * (at(i + 1, j) - at(i + 1, j + 1));
-}
-
-// An interior point of each cell, in world coordinates: the mean of the vertices of its facets.
-inline std::vector<std::array<double, 3>> cell_points_3(const Plane_arrangement_3& arrangement,
-                                                        const Surface_problem_3& problem)
-{
-  typedef Plane_arrangement_3 Arr;
-  std::vector<std::array<double, 3>> out(arrangement.number_of_cells());
-  for(std::size_t c = 0; c < arrangement.number_of_cells(); ++c) {
-    std::array<double, 3> m = {{0, 0, 0}};
-    std::size_t k = 0;
-    for(Arr::Facet_index f : arrangement.cell_facets(Arr::Cell_index(c)))
-      for(std::size_t i = 0; i < arrangement.facet_degree(f); ++i, ++k)
-        for(int j = 0; j < 3; ++j) m[j] += arrangement.point(arrangement.facet_vertex(f, i))[j];
-    for(int j = 0; j < 3; ++j) m[j] /= double(k);
-    out[c] = problem.to_world(m);
-  }
-  return out;
 }
 
 // The input checks of search_surface_basins_3().

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -202,6 +203,34 @@ inline Density_weighted_area_functional_3 random_blob_functional_3(const Surface
       heights.push_back(z);
       G.blobs.push_back(Gaussian_blob_3{cx, cy, z, sigma, amplitude});
     }
+  }
+  return G;
+}
+
+/*!
+  The two-level blob field of the thesis's Table 2.4 (ch. 2.7.2): the field of `random_blob_functional_3(problem, m,
+  k, sigma, amplitude, seed)` plus as many blobs again (m k), `detail_ratio` times narrower (the thesis: 5), of the
+  same amplitude, at uniformly random points of Ω x (zmin + 0.1 (zmax - zmin), zmax - 0.1 (zmax - zmin)). The narrow
+  blobs are a second, finer level of detail: they change the energy of a surface by much less than the wide ones,
+  so the coarse structure decides the basin and the fine one the exact optimum inside it.
+  \throws std::invalid_argument unless detail_ratio >= 1
+*/
+inline Density_weighted_area_functional_3 two_level_blob_functional_3(const Surface_problem_3& problem, int m, int k,
+                                                                      double sigma, double amplitude,
+                                                                      std::uint64_t seed, double detail_ratio = 5)
+{
+  if(!(detail_ratio >= 1) || !std::isfinite(detail_ratio))
+    throw std::invalid_argument("MDCS: two_level_blob_functional_3: detail_ratio must be finite and >= 1");
+  Density_weighted_area_functional_3 G = random_blob_functional_3(problem, m, k, sigma, amplitude, seed);
+  // A generator of its own, so that the coarse level is exactly random_blob_functional_3's field.
+  std::mt19937_64 rng(seed ^ 0xD1B54A32D192ED03ull);
+  std::uniform_real_distribution<double> U(0, 1);
+  const double w = problem.domain.xmax() - problem.domain.xmin(), h = problem.domain.ymax() - problem.domain.ymin();
+  const std::size_t coarse = G.blobs.size();
+  for(std::size_t i = 0; i < coarse; ++i) {
+    const double x = problem.domain.xmin() + w * U(rng), y = problem.domain.ymin() + h * U(rng);
+    const double z = problem.zmin + (problem.zmax - problem.zmin) * (0.1 + 0.8 * U(rng));
+    G.blobs.push_back(Gaussian_blob_3{x, y, z, sigma / detail_ratio, amplitude});
   }
   return G;
 }
