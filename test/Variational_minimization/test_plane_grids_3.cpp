@@ -151,6 +151,13 @@ TEST_CASE("regular_surface_planes_3: bad input is refused with a message", "[var
   CHECK(refuses(1, many, P));
   many.offset_steps = 4000;
   CHECK(refuses(20, many, P));
+  // Boundary pencils alone past the bound: 1024 segments x 2 curves x 127 slopes.
+  VM::Surface_problem_3 fine_band = P;
+  fine_band.boundary_segments_per_side = 256;
+  fine_band.upper_boundary = [](double, double) { return 0.9; };
+  VM::Regular_surface_plane_options_3 steep = o;
+  steep.max_slope = 8;
+  CHECK(refuses(63, steep, fine_band));
   // The grid is defined on rectangles only.
   VM::Surface_problem_3 L = P;
   L.set_domain_polygon({{{0, 0}}, {{1, 0}}, {{1, 0.5}}, {{0.5, 0.5}}, {{0.5, 1}}, {{0, 1}}});

@@ -160,11 +160,14 @@ bool for_each_regular_grid_plane_3(const Regular_plane_grid_layout_3& g, F f)
   exactly regular, and the set of interior planes is exactly symmetric about the centre of the box (x -> -x,
   y -> -y, z -> -z); the world gradients and spacing are those asked within 0.1% (rounding to the lattice). Equal
   planes are listed once. The count grows like (2n + 1)^2 m (1 + max_slope (width + height) / (2 (zmax - zmin)))
-  for the interior, plus (2n + 2) planes per boundary segment.
+  for the interior, plus (2n + 2) planes per boundary segment. The pencil slopes are rounded like those of the
+  slope-limited `surface_planes_3()`: to steps of (zmax - zmin) / (64 w), w the side length across the wall, and
+  clamped to 8 (zmax - zmin) / w; pencils that round to the same plane are listed once.
 
   \throws std::invalid_argument if the problem is invalid or polygonal, n < 1 or n > `regular_surface_max_steps_3()`,
   `max_slope` is not finite, not > 0, above `surface_max_slope_3(problem)` or too small for the lattice, or the grid
-  would have more than `surface_max_planes_3()` planes (checked before the list is built).
+  would have more than `surface_max_planes_3()` planes (checked while the list is built, which never grows past
+  that bound).
 */
 inline std::vector<Lattice_plane_3>
 regular_surface_planes_3(const Surface_problem_3& problem, std::size_t n,
@@ -188,8 +191,9 @@ regular_surface_planes_3(const Surface_problem_3& problem, std::size_t n,
     unique.push_back(p);
     return true;
   };
-  for(const Lattice_plane_3& p : planes) add(p);
-  if(!internal::for_each_regular_grid_plane_3(g, add))
+  bool within_bound = true;
+  for(const Lattice_plane_3& p : planes) within_bound = within_bound && add(p);
+  if(!within_bound || !internal::for_each_regular_grid_plane_3(g, add))
     throw std::invalid_argument("MDCS: regular_surface_planes_3: the grid n = " + std::to_string(n) + ", m = " +
                                 std::to_string(options.offset_steps == 0 ? n : options.offset_steps) +
                                 " has more than " + std::to_string(surface_max_planes_3()) + " planes");
