@@ -235,20 +235,7 @@ void part_scherk(bool quick, const std::string& prefix)
   // What the raw energy converges to: the discrete problem spans the piecewise linear boundary curve (the
   // boundary samples), not Scherk's. Its minimal area, by relaxation on fine grids with that curve as boundary:
   for(int segments : {4, 8, 16}) {
-    VM::Surface_problem_3 Q = VM::scherk_surface_problem_3(segments);
-    const double h = 2 * a / segments;
-    auto interpolate = [=](double t, double fixed, bool x_side) {
-      const int k = std::min(segments - 1, int(std::floor((t + a) / h)));
-      const double t0 = -a + k * h, u = (t - t0) / h;
-      const double g0 = x_side ? VM::scherk_surface_height(fixed, t0) : VM::scherk_surface_height(t0, fixed);
-      const double g1 = x_side ? VM::scherk_surface_height(fixed, t0 + h) : VM::scherk_surface_height(t0 + h, fixed);
-      return (1 - u) * g0 + u * g1;
-    };
-    Q.lower_boundary = [=](double x, double y) {
-      if(std::abs(std::abs(x) - a) < 1e-12) return interpolate(y, x, true);
-      if(std::abs(std::abs(y) - a) < 1e-12) return interpolate(x, y, false);
-      return VM::scherk_surface_height(x, y);
-    };
+    const VM::Surface_problem_3 Q = MDCS_test::scherk_piecewise_linear_boundary_problem(segments);
     VM::Surface_relaxation_options_3 ro;
     ro.grids = {20, 40, 80, 160};
     const double e = VM::relax_surface_3(Q, VM::Area_functional_3(), [](double x, double y) {

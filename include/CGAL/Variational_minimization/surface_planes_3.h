@@ -306,16 +306,13 @@ inline std::vector<Lattice_plane_3> surface_planes_3(const Surface_problem_3& pr
 
 namespace internal {
 
-// surface_planes_3() after its checks (problem, options and n <= surface_max_planes_3()); plane selection draws
-// up to n + pencils planes here to replace some of its n.
-inline std::vector<Lattice_plane_3> draw_surface_planes_3(const Surface_problem_3& problem, std::size_t n,
-                                                          const Surface_plane_options_3& options)
+// The boundary segments of a rectangular problem (the lower loop, then the upper one when relaxed) and the planes
+// of its boundary cone: one per lower segment, through the apex (centre of Ω, mean boundary height).
+inline void rectangle_boundary_cone_3(const Surface_problem_3& problem,
+                                      std::vector<std::array<std::array<std::int64_t, 3>, 2>>& segments,
+                                      std::vector<Lattice_plane_3>& planes)
 {
-  std::mt19937_64 rng(options.seed);
-  if(problem.is_polygonal()) return internal::polygon_surface_planes_3(problem, n, options, rng);
   const std::int64_t L = Plane_arrangement_3::lattice_size;
-  std::vector<std::array<std::array<std::int64_t, 3>, 2>> segments;
-  std::vector<Lattice_plane_3> planes;
   for(int upper = 0; upper < (problem.is_relaxed() ? 2 : 1); ++upper) {
     const auto loop = problem.boundary_loop(upper != 0);
     std::int64_t mean = 0;
@@ -328,17 +325,36 @@ inline std::vector<Lattice_plane_3> draw_surface_planes_3(const Surface_problem_
       if(upper == 0) planes.push_back(internal::cone_plane(p, q, apex));
     }
   }
+}
+
+// The plane through the segment s on a side wall of a rectangular problem whose slope across the segment, towards
+// the inside, is about `world_slope` (sloped_pencil_plane() in lattice units of the wall's inward axis).
+inline Lattice_plane_3 wall_pencil_plane_3(const Surface_problem_3& problem,
+                                           const std::array<std::array<std::int64_t, 3>, 2>& s, double world_slope)
+{
+  const std::int64_t L = Plane_arrangement_3::lattice_size;
+  const bool x_wall = s[0][0] == s[1][0] && (s[0][0] == 0 || s[0][0] == L);
+  const double h = x_wall ? problem.domain.xmax() - problem.domain.xmin() : problem.domain.ymax() - problem.domain.ymin();
+  return sloped_pencil_plane(s[0], s[1], world_slope * h / (problem.zmax - problem.zmin));
+}
+
+// surface_planes_3() after its checks (problem, options and n <= surface_max_planes_3()); plane selection draws
+// up to n + pencils planes here to replace some of its n.
+inline std::vector<Lattice_plane_3> draw_surface_planes_3(const Surface_problem_3& problem, std::size_t n,
+                                                          const Surface_plane_options_3& options)
+{
+  std::mt19937_64 rng(options.seed);
+  if(problem.is_polygonal()) return internal::polygon_surface_planes_3(problem, n, options, rng);
+  std::vector<std::array<std::array<std::int64_t, 3>, 2>> segments;
+  std::vector<Lattice_plane_3> planes;
+  rectangle_boundary_cone_3(problem, segments, planes);
   const std::size_t pencils = surface_pencil_count_3(problem, n, options);
   std::uniform_real_distribution<double> slope(-options.max_slope, options.max_slope);
   for(std::size_t i = planes.size(); i < pencils; ++i) {
     const auto& s = segments[i % segments.size()];
-    if(options.distribution == Plane_distribution_3::slope_limited) {
-      // The slope across the segment, in lattice units of the wall's inward axis.
-      const bool x_wall = s[0][0] == s[1][0] && (s[0][0] == 0 || s[0][0] == L);
-      const double h = x_wall ? problem.domain.xmax() - problem.domain.xmin()
-                              : problem.domain.ymax() - problem.domain.ymin();
-      planes.push_back(internal::sloped_pencil_plane(s[0], s[1], slope(rng) * h / (problem.zmax - problem.zmin)));
-    } else
+    if(options.distribution == Plane_distribution_3::slope_limited)
+      planes.push_back(internal::wall_pencil_plane_3(problem, s, slope(rng)));
+    else
       planes.push_back(internal::pencil_plane(s[0], s[1], rng));
   }
   internal::add_random_surface_planes_3(problem, n, options, rng, planes);
