@@ -25,6 +25,10 @@
 //   identical, the serial fraction of the one-thread runs and the Amdahl projection to 4, 8 and 16 threads
 //   (<csv>_threads*.csv). --project-total S: also project a one-thread total of S seconds (e.g. of 10^7 points)
 //   to 16 threads with that serial fraction. Exit code 1 when a result differs between thread counts.
+//   --random-wheels K1..K2: the random-wheel experiment of the thesis's Fig. 3.5 instead (mwt_random_wheels.h):
+//   --wheel-trials T random wheels (default 200) for each k = K1..K2 points on the circle; the fractions settled by
+//   the LP alone and by the LMT-skeleton alone with 95 % intervals, in <csv> and the plot <csv minus .csv>.svg.
+//   Exit code 1 when an integral LP weight differs from the LMT pipeline's.
 
 // stage times in processor time (std::clock): the benchmark machine may be shared
 #define MDCS_MWT_CPU_TIMERS 1
@@ -32,6 +36,7 @@
 #include <CGAL/Minimum_weight_triangulation_2.h>
 
 #include "mdcs_bench.h"
+#include "mwt_random_wheels.h"
 #include "mwt_thread_scaling.h"
 
 #include <algorithm>
@@ -89,6 +94,9 @@ int main(int argc, char** argv)
   std::string csv = "mwt.csv";
   std::vector<std::size_t> thread_list;   // --threads: the thread-scaling mode
   double project_total = 0;
+  bool random_wheels = false;
+  int wheel_k_min = 0, wheel_k_max = 0;
+  long wheel_trials = 200;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--large") large = true;
@@ -102,6 +110,11 @@ int main(int argc, char** argv)
     else if(a == "--trace-memory") trace_memory = true;
     else if(a == "--bb-limit" && i + 1 < argc) bb_limit = std::atof(argv[++i]);
     else if(a == "--project-total" && i + 1 < argc) project_total = std::atof(argv[++i]);
+    else if(a == "--random-wheels" && i + 1 < argc) {
+      random_wheels = true;
+      if(std::sscanf(argv[++i], "%d..%d", &wheel_k_min, &wheel_k_max) != 2) wheel_k_min = wheel_k_max = 0;
+    }
+    else if(a == "--wheel-trials" && i + 1 < argc) wheel_trials = std::atol(argv[++i]);
     else if(a == "--threads" && i + 1 < argc) {
       std::string list = argv[++i];
       for(std::size_t pos = 0; pos < list.size();) {
@@ -120,7 +133,16 @@ int main(int argc, char** argv)
         pos = comma == std::string::npos ? list.size() : comma + 1;
       }
     }
-    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R] [--sets S] [--max-wheel K] [--trace-memory] [--csv FILE] [--threads T1,T2,.. [--project-total S]]\n"); return 2; }
+    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R] [--sets S] [--max-wheel K] [--trace-memory] [--csv FILE] [--threads T1,T2,.. [--project-total S]] [--random-wheels K1..K2 [--wheel-trials T]]\n"); return 2; }
+  }
+  if(random_wheels) {
+    if(wheel_k_min < 3 || wheel_k_max <= wheel_k_min || wheel_trials < 1) {
+      std::fprintf(stderr, "bench_mwt: --random-wheels K1..K2 needs 3 <= K1 < K2 and --wheel-trials >= 1\n");
+      return 2;
+    }
+    const auto dot = csv.rfind(".csv");
+    return mwt_random_wheels::run(wheel_k_min, wheel_k_max, wheel_trials, csv,
+                                  (dot == std::string::npos ? csv : csv.substr(0, dot)) + ".svg") ? 0 : 1;
   }
   if(!thread_list.empty()) {
     std::vector<std::pair<std::string, std::vector<Point>>> inputs;
