@@ -3,7 +3,8 @@
 //    given targets, for 1, 2, 3 and 8 threads, delivered in order and one at a time;
 //  - the local sparse rows hold every vertex within max_distance and nothing beyond, with the distances of a run on
 //    the whole mesh stopped at max_distance (exact methods and Dijkstra: equal up to 1e-12 relative; fast marching
-//    and flat-exact: the same within their own error), identical for every thread count;
+//    and flat-exact: the same within their own error; exact: also equal to unlimited runs), identical for every
+//    thread count; the vertex-oriented engine's shadow pruning gives the distances of runs without it;
 //  - the symmetric matrix is symmetric, holds min of the two directions, and every pair within max_distance;
 //  - Surface_mesh and Polyhedron_3 agree; invalid options are rejected; progress and cancellation;
 //  - the .npy and Matrix Market writers round-trip.
