@@ -3,7 +3,8 @@
 //    given targets, for 1, 2, 3 and 8 threads, delivered in order and one at a time;
 //  - the local sparse rows hold every vertex within max_distance and nothing beyond, with the distances of a run on
 //    the whole mesh stopped at max_distance (exact methods and Dijkstra: equal up to 1e-12 relative; fast marching
-//    and flat-exact: the same within their own error), identical for every thread count;
+//    and flat-exact: the same within their own error; exact: also equal to unlimited runs), identical for every
+//    thread count; the vertex-oriented engine's shadow pruning gives the distances of runs without it;
 //  - the symmetric matrix is symmetric, holds min of the two directions, and every pair within max_distance;
 //  - Surface_mesh and Polyhedron_3 agree; invalid options are rejected; progress and cancellation;
 //  - the .npy and Matrix Market writers round-trip.
@@ -124,6 +125,18 @@ PG::Geodesic_sparse_matrix local_rows_matrix(const Mesh& m, const std::vector<ve
   return s;
 }
 
+// One single-source run of a vertex-oriented engine, stopped at `limit` if it is finite.
+void run_from_vertex(PG::internal::Vertex_oriented_window_propagation<double>& e, PG::internal::Matrix_index source,
+                     double limit)
+{
+  if(limit < inf) e.set_distance_limit(limit);
+  else e.clear_distance_limit();
+  e.clear();
+  e.add_vertex_source(source, 0);
+  CGAL::MDCS::No_progress none;
+  e.run(none);
+}
+
 bool same_matrix(const PG::Geodesic_sparse_matrix& a, const PG::Geodesic_sparse_matrix& b)
 {
   return a.rows == b.rows && a.columns == b.columns && a.row_begin == b.row_begin && a.column == b.column &&
@@ -196,16 +209,18 @@ TEST_CASE("local_geodesic_distance_rows: every pair within max_distance, nothing
         INFO(t << " threads");
         CHECK(same_matrix(local_rows_matrix(m, sources, options_for(method, t, r)), one));
       }
-      // Against runs on the whole mesh stopped at r (merged windows: the unlimited distances_only run, whose
-      // vertex-oriented schedule the neighbourhood runs too; the merges differ a little between the two meshes,
-      // within the merge tolerance).
+      // Against runs on the whole mesh stopped at r (exact: the unlimited run; merged windows: the unlimited
+      // distances_only run, whose vertex-oriented schedule the neighbourhood runs too; the merges differ a little
+      // between the two meshes, within the merge tolerance).
       const bool merged = method == PG::Geodesic_method::merged_windows;
       const double tolerance = method == PG::Geodesic_method::exact || method == PG::Geodesic_method::dijkstra ? 1e-12
                                : merged ? 0.05 : 1e-9;
       std::size_t missing = 0, extra = 0, differ = 0, pairs = 0, beyond = 0, unsorted = 0;
       double worst = 0;
       for(std::size_t i = 0; i < sources.size(); ++i) {
-        const std::vector<double> whole = single_source(m, sources[i], method, 0.01, merged ? inf : r);
+        // exact: the unlimited run (its distances up to the limit are final: no limit's own rounding involved)
+        const bool unlimited = merged || method == PG::Geodesic_method::exact;
+        const std::vector<double> whole = single_source(m, sources[i], method, 0.01, unlimited ? inf : r);
         std::vector<double> row(num_vertices(m), inf);
         for(std::size_t k = one.row_begin[i]; k < one.row_begin[i + 1]; ++k) {
           row[one.column[k]] = one.value[k];
@@ -263,12 +278,7 @@ TEST_CASE("vertex-oriented engine reused between runs: every run equals one on a
       Engine fresh(mesh);
       for(Engine* e : {&reused, &fresh}) {
         e->set_record_parents(parents);
-        if(limit < inf) e->set_distance_limit(limit);
-        else e->clear_distance_limit();
-        e->clear();
-        e->add_vertex_source(source, 0);
-        CGAL::MDCS::No_progress none;
-        e->run(none);
+        run_from_vertex(*e, source, limit);
       }
       ++runs;
       std::vector<char> tracked(mesh.number_of_vertices, 0);
@@ -291,6 +301,58 @@ TEST_CASE("vertex-oriented engine reused between runs: every run equals one on a
     CHECK(compared > 15 * 20);
     CHECK(differ == 0);
     CHECK(untracked == 0); // every vertex with a distance is among those the next clear() resets
+  }
+}
+
+// Shadow pruning (the local matrix's exact rows): a saddle or boundary vertex emits windows only over the faces a
+// shortest path through it can enter. Oracle: the same engine without the rule, on surfaces where paths bend at
+// saddles (a bumpy sphere, a terrain with a boundary) and around the reflex corners of a hole (boundary vertices of
+// angle 3 pi / 2), unlimited and limited, equal to 1e-12 relative; and the rule must save windows.
+TEST_CASE("vertex-oriented engine with shadow pruning: the distances of runs without it, with fewer windows",
+          "[geodesics][matrix][local]")
+{
+  typedef PG::internal::Vertex_oriented_window_propagation<double> Engine;
+  const Mesh meshes[] = {bumpy(), MDCS_test::mesh_from_soup<Mesh>(MDCS_test::height_field_grid<Point_3>(14, 0.25, 7)),
+                         MDCS_test::mesh_from_soup<Mesh>(MDCS_test::square_with_hole<Point_3>(16, 5, 11, 6, 9))};
+  const char* names[] = {"bumpy sphere", "terrain", "square with a hole"};
+  for(int kind = 0; kind < 3; ++kind) {
+    INFO(names[kind]);
+    const PG::Geodesic_surface_3<Mesh> surface(meshes[kind]);
+    const PG::internal::Matrix_mesh& mesh = surface.compact_mesh();
+    const double r = 5 * mean_edge_length(meshes[kind]);
+    Engine plain(mesh), pruned(mesh);
+    pruned.set_shadow_pruning(true);
+    pruned.set_reuse_between_runs(true);
+    std::size_t compared = 0, differ = 0, reach_differs = 0, windows_plain = 0, windows_pruned = 0;
+    double worst = 0;
+    for(std::size_t k = 0; k < 12; ++k) {
+      const PG::internal::Matrix_index source = PG::internal::Matrix_index((k * 53 + 7) % mesh.number_of_vertices);
+      const double limit = k % 3 == 2 ? r : inf;
+      for(Engine* e : {&plain, &pruned})
+        run_from_vertex(*e, source, limit);
+      windows_plain += plain.statistics().windows_created;
+      windows_pruned += pruned.statistics().windows_created;
+      for(std::size_t v = 0; v < mesh.number_of_vertices; ++v) {
+        const double a = plain.vertex_distance(PG::internal::Matrix_index(v));
+        const double b = pruned.vertex_distance(PG::internal::Matrix_index(v));
+        if((a < inf) != (b < inf)) {
+          // at the limit up to rounding a vertex may fall on either side
+          if(!(std::abs((a < inf ? a : b) - limit) <= 1e-12 * limit)) ++reach_differs;
+          continue;
+        }
+        if(a == inf) continue;
+        ++compared;
+        const double e = std::abs(a - b) / std::max(a, 1e-300);
+        worst = std::max(worst, e);
+        if(e > 1e-12) ++differ;
+      }
+    }
+    INFO(compared << " distances, worst relative difference " << worst << "; windows " << windows_plain << " -> "
+                  << windows_pruned);
+    CHECK(compared > 12 * 50);
+    CHECK(differ == 0);
+    CHECK(reach_differs == 0);
+    CHECK(windows_pruned < windows_plain);
   }
 }
 

@@ -131,6 +131,7 @@ public:
       whole_.reset(new Vertex_oriented_window_propagation<double>(s.mesh));
       whole_->set_record_parents(false);
       whole_->set_reuse_between_runs(true);
+      whole_->set_shadow_pruning(true); // saddles emit only where a shortest path can bend (same distances)
       whole_->set_distance_limit(radius_); // a little beyond max_distance (rounding); filtered below
       whole_->clear();
     } else {

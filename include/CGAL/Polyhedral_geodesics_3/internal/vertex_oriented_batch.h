@@ -386,6 +386,10 @@ private:
     if(h1 > len) h1 = len;
     if(!(h1 - h0 > s.relative_tolerance * len))
       return;
+    if(s.has_limit && window_min_distance(h0, h1, sx, sy, w.sigma) > s.limit) {
+      sink.pruned(); // wholly beyond the limit: step 1 would drop it, after a trip through a window list
+      return;
+    }
     sink.child(t, Window{h0, h1, sx, sy, w.sigma, w.root, w.lobe});
   }
 

@@ -186,6 +186,26 @@ public:
       reuse_ready_ = false;
     reuse_ = reuse;
   }
+  // Shadow pruning (exact runs of this sequential schedule; not merging, not the parallel schedule): a settled
+  // saddle or boundary vertex emits windows only over the faces that a shortest path through it can enter. Such a
+  // path arrives and leaves with an angle of at least pi on both sides (on the surface's side only, at a boundary
+  // vertex), whatever shortest path to the vertex it arrived by (with another, the angle on one side would be below
+  // pi and the path could be shortened), so the faces outside that "shadow" of the direction the vertex got its
+  // value from carry no shortest path through it; without the rule their windows are created and then trimmed by
+  // the vertices around. The direction is recorded with every lowering of such a vertex. Takes effect at the next
+  // clear().
+  void set_shadow_pruning(bool on)
+  {
+    if(on == shadow_)
+      return;
+    shadow_ = on;
+    reuse_ready_ = false; // the vertex flags change: the next clear() is a full one
+    if(on)
+      build_shadow_angles();
+    else
+      for(std::uint8_t& flags : vertex_flags_)
+        flags &= std::uint8_t(~SHADOW_RULE);
+  }
   // With reuse: every vertex whose record the last run changed (each once, in the order reached); a superset of
   // the vertices with a distance.
   const std::vector<Index>& touched_vertices() const { return touched_vertices_; }
@@ -347,7 +367,9 @@ public:
 
 private:
   enum State : std::uint8_t { OUTSIDE = 0, FRONT = 1, INSIDE = 2 };
-  enum Flag : std::uint8_t { PSEUDO_SOURCE = 1, LOBE_VERTEX = 2, IS_SOURCE = 4, SETTLED_ONCE = 8, TOUCHED = 16 };
+  enum Flag : std::uint8_t { PSEUDO_SOURCE = 1, LOBE_VERTEX = 2, IS_SOURCE = 4, SETTLED_ONCE = 8, TOUCHED = 16,
+                             SHADOW_RULE = 32,    // a pseudo-source where shadow pruning applies
+                             ARRIVAL_KNOWN = 64 }; // arrival_ holds the direction of its current value
 
   // What the propagation keeps per vertex, in one record: a batch reads and writes its three vertices, one cache
   // line each.
@@ -430,8 +452,116 @@ private:
 
   void lower_vertex(Index v, const FT& d, const Window& w, Index g, const FT& at)
   {
-    if(update_vertex(v, d, source_of_root(w.root)) && record_parents_)
+    if(!update_vertex(v, d, source_of_root(w.root)))
+      return;
+    if(record_parents_)
       parents_[std::size_t(v)] = Parent{w.sx, w.sy, at, g, w.root};
+    if(vertices_[std::size_t(v)].flags & SHADOW_RULE)
+      note_arrival(v, arrival_from_window(v, w, g, at));
+  }
+
+  // ------------------------------------------------------------------------------------------------
+  // Shadow pruning (see set_shadow_pruning()). Directions at a vertex v are angles around it, measured
+  // counterclockwise over its faces from the first halfedge of its star in that order (star_angle_: the angle of
+  // each halfedge leaving v; corner_angle_: the angle of its face at v; vertex_total_angle_: the sum).
+
+  void build_shadow_angles()
+  {
+    const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
+    corner_angle_.assign(nh, 0);
+    star_angle_.assign(nh, 0);
+    vertex_total_angle_.assign(nv, 0);
+    arrival_.assign(nv, 0);
+    for(std::size_t h = 0; h < nh; ++h) {
+      const Point_2_ft<FT>& c = mesh_.he[h].opposite; // the corner at source(h) lies between (length, 0) and c
+      corner_angle_[h] = std::atan2(to_double_value(c.y), to_double_value(c.x));
+    }
+    for(std::size_t v = 0; v < nv; ++v) {
+      if(!(vertex_flags_[v] & PSEUDO_SOURCE) || star_begin_[v] == star_begin_[v + 1])
+        continue;
+      // The first halfedge counterclockwise: one on the border (nothing clockwise of it), else any. The next one
+      // counterclockwise leaves v along the other edge of the face: twin(prev(h)).
+      Index first = star_[std::size_t(star_begin_[v])];
+      for(Index k = star_begin_[v]; k < star_begin_[v + 1]; ++k)
+        if(mesh_.he[std::size_t(star_[std::size_t(k)])].twin < 0)
+          first = star_[std::size_t(k)];
+      double angle = 0;
+      Index h = first, count = 0;
+      do {
+        star_angle_[std::size_t(h)] = angle;
+        angle += corner_angle_[std::size_t(h)];
+        ++count;
+        h = mesh_.he[std::size_t(Mesh::prev(h))].twin;
+      } while(h >= 0 && h != first && count <= star_begin_[v + 1] - star_begin_[v]);
+      vertex_total_angle_[v] = angle;
+      // One fan of faces (a manifold vertex), not made a pseudo-source by a degenerate face: the rule holds.
+      if(count == star_begin_[v + 1] - star_begin_[v] && (h < 0 || h == first) && is_saddle_or_boundary_vertex(mesh_, v) &&
+         (h < 0) == bool(mesh_.vertex_on_boundary[v]))
+        vertex_flags_[v] |= SHADOW_RULE;
+    }
+    for(std::size_t h = 0; h < nh; ++h) // (a degenerate face at v: no rule there)
+      if(mesh_.he[h].length == FT(0) || !(mesh_.he[h].opposite.y > FT(0)))
+        for(Index v : {mesh_.source(Index(h)), mesh_.target(Index(h)), mesh_.opposite_vertex(Index(h))})
+          vertex_flags_[std::size_t(v)] &= std::uint8_t(~SHADOW_RULE);
+  }
+
+  static double angle_from(double a) // into [0, 2 pi)
+  {
+    const double two_pi = 6.28318530717958647692;
+    while(a < 0) a += two_pi;
+    while(a >= two_pi) a -= two_pi;
+    return a;
+  }
+
+  // The direction (an angle around v) back along the last segment of a path to v through window w of halfedge g:
+  // from v to the pseudo-source when v is an end of g, to the point `at` of g's edge when v is the opposite corner.
+  double arrival_from_window(Index v, const Window& w, Index g, const FT& at) const
+  {
+    const double sx = to_double_value(w.sx), sy = to_double_value(w.sy);
+    const Point_2_ft<FT>& c = mesh_.he[std::size_t(g)].opposite;
+    const double cx = to_double_value(c.x), cy = to_double_value(c.y), L = to_double_value(mesh_.he[std::size_t(g)].length);
+    if(v == mesh_.source(g)) // g leaves v: the direction's angle from g, clockwise into the face behind it if negative
+      return star_angle_[std::size_t(g)] + std::atan2(sy, sx);
+    if(v == mesh_.target(g)) { // next(g) leaves v towards c: counterclockwise from it over g's face, then beyond
+      const Index n = Mesh::next(g);
+      return star_angle_[std::size_t(n)] + angle_from(std::atan2(sy, sx - L) - std::atan2(cy, cx - L));
+    }
+    const Index p = Mesh::prev(g); // leaves v (the opposite corner) towards source(g); counterclockwise over g's face
+    return star_angle_[std::size_t(p)] + angle_from(std::atan2(-cy, to_double_value(at) - cx) - std::atan2(-cy, -cx));
+  }
+
+  void note_arrival(Index v, double angle)
+  {
+    Vertex_record& r = vertices_[std::size_t(v)];
+    const double total = vertex_total_angle_[std::size_t(v)];
+    if(mesh_.vertex_on_boundary[std::size_t(v)])
+      angle = angle < 0 ? 0 : (angle > total ? total : angle);
+    else {
+      angle = std::fmod(angle, total);
+      if(angle < 0) angle += total;
+    }
+    arrival_[std::size_t(v)] = angle;
+    r.flags |= ARRIVAL_KNOWN;
+  }
+
+  // Whether the face of h (leaving v) meets the shadow of v's arrival direction: the directions at least pi from
+  // it on both sides (on the surface's side at a boundary vertex), widened by a margin for rounding.
+  bool face_in_shadow(Index v, Index h) const
+  {
+    const double pi = 3.14159265358979323846, margin = 1e-6;
+    const double total = vertex_total_angle_[std::size_t(v)], beta = arrival_[std::size_t(v)];
+    const double a = star_angle_[std::size_t(h)], corner = corner_angle_[std::size_t(h)];
+    if(mesh_.vertex_on_boundary[std::size_t(v)])
+      return a <= beta - pi + margin || a + corner >= beta + pi - margin;
+    // the face's directions as offsets from beta in [0, total), possibly wrapping past total
+    double s0 = std::fmod(a - beta, total);
+    if(s0 < 0) s0 += total;
+    const double s1 = s0 + corner, lo = pi - margin, hi = total - pi + margin;
+    if(!(lo <= hi))
+      return false; // no bend possible (a flat vertex within the margin)
+    if(s0 <= hi && s1 >= lo)
+      return true;
+    return s1 - total >= lo; // the wrapped part [0, s1 - total]
   }
 
   // A safety net for merging (and for any rounding accident): a vertex left unreached next to a reached one.
@@ -467,11 +597,16 @@ private:
     const Vertex_record r = vertices_[std::size_t(v)];
     const FT d = r.dist;
     const std::int32_t lobe = (r.flags & LOBE_VERTEX) && !(r.flags & IS_SOURCE) ? 1 : 0;
+    const bool shadow = (r.flags & (SHADOW_RULE | ARRIVAL_KNOWN | IS_SOURCE)) == (SHADOW_RULE | ARRIVAL_KNOWN) &&
+                        merge_tolerance_ == FT(0);
     for(Index k = star_begin_[std::size_t(v)]; k < star_begin_[std::size_t(v) + 1]; ++k) {
       const Index h = star_[std::size_t(k)]; // source(h) == v
-      lower_along_edge(mesh_.target(h), d + mesh_.he[std::size_t(h)].length, r.source, v);
-      const Index hp = Mesh::prev(h);
-      lower_along_edge(mesh_.source(hp), d + mesh_.he[std::size_t(hp)].length, r.source, v);
+      const Index hn = Mesh::next(h), hp = Mesh::prev(h);
+      // the directions back to v: from target(h), the far side of the corner of hn; from source(hp), hp itself
+      if(lower_along_edge(mesh_.target(h), d + mesh_.he[std::size_t(h)].length, r.source, v))
+        note_edge_arrival(mesh_.target(h), hn, corner_angle_.empty() ? 0 : corner_angle_[std::size_t(hn)]);
+      if(lower_along_edge(mesh_.source(hp), d + mesh_.he[std::size_t(hp)].length, r.source, v))
+        note_edge_arrival(mesh_.source(hp), hp, 0);
       const Index g = Mesh::next(h);         // the edge opposite v in the face of h
       const Index t = mesh_.he[std::size_t(g)].twin;
       if(t < 0)
@@ -479,15 +614,27 @@ private:
       const FT L = mesh_.he[std::size_t(g)].length;
       if(has_limit_ && d > limit_)
         continue;
+      if(shadow && !face_in_shadow(v, h))
+        continue;
       const Point_2_ft<FT>& p = mesh_.he[std::size_t(g)].opposite; // v in g's frame
       add_window(t, Window{FT(0), L, L - p.x, -p.y, d, v, lobe});
     }
   }
 
-  void lower_along_edge(Index u, const FT& d, Index source, Index from)
+  bool lower_along_edge(Index u, const FT& d, Index source, Index from)
   {
-    if(update_vertex(u, d, source) && record_parents_)
+    if(!update_vertex(u, d, source))
+      return false;
+    if(record_parents_)
       parents_[std::size_t(u)] = Parent{FT(0), FT(0), FT(0), -1, from};
+    return true;
+  }
+
+  // u was lowered along an edge; the edge's direction from u is `offset` counterclockwise of halfedge h (leaving u).
+  void note_edge_arrival(Index u, Index h, double offset)
+  {
+    if(vertices_[std::size_t(u)].flags & SHADOW_RULE)
+      note_arrival(u, star_angle_[std::size_t(h)] + offset);
   }
 
   // Whether a settled pseudo-source should emit its windows: always, except beyond the limit or, in a point
@@ -760,6 +907,8 @@ private:
   FT limit_ = FT(0), front_ = FT(0);
   bool has_limit_ = false, stopped_early_ = false, record_parents_ = false;
   bool reuse_ = false, reuse_ready_ = false; // reuse between runs; ready: the arrays are sized and reset
+  bool shadow_ = false;                      // shadow pruning (set_shadow_pruning())
+  std::vector<double> corner_angle_, star_angle_, vertex_total_angle_, arrival_; // ditto: per halfedge, per vertex
   std::vector<Index> touched_vertices_, used_lists_;
   std::vector<Index> stop_targets_;
   Backward_query* query_ = nullptr;
