@@ -62,12 +62,13 @@ struct Outcome
   std::vector<double> best_after_solve; // the best discrete energy after each solve
 };
 
-// Peak resident memory since the last call (MiB), or NaN where the kernel does not let us reset it.
-double peak_since_reset(bool& reset_ok, double& base)
+// Peak resident memory of the process since the last call (MiB), or NaN where the kernel does not let us reset
+// the high-water mark. (The absolute peak: a difference to the resident size at the reset came out slightly negative
+// where a phase freed more than it allocated, since the kernel updates the high-water mark lazily.)
+double peak_since_reset(bool& reset_ok)
 {
-  const double peak = reset_ok ? mdcs_bench::peak_rss_mib() - base : std::numeric_limits<double>::quiet_NaN();
+  const double peak = reset_ok ? mdcs_bench::peak_rss_mib() : std::numeric_limits<double>::quiet_NaN();
   reset_ok = mdcs_bench::reset_peak_rss();
-  base = mdcs_bench::current_rss_mib();
   return peak;
 }
 
@@ -181,7 +182,6 @@ int main(int argc, char** argv)
   std::printf(".\n\n");
 
   bool reset_ok = mdcs_bench::reset_peak_rss();
-  double base = mdcs_bench::current_rss_mib();
   // a. Local descents from random smooth starts (bilinear through a random 5 x 5 grid of heights in [0, 1]).
   std::mt19937_64 rng(2024);
   std::uniform_real_distribution<double> U(0, 1);
@@ -200,7 +200,7 @@ int main(int argc, char** argv)
     local.push_back(VM::relax_surface_3(P, G, start, ro).energy);
     local_seconds.push_back(mdcs_bench::cpu_seconds() - t0);
   }
-  const double local_peak = peak_since_reset(reset_ok, base);
+  const double local_peak = peak_since_reset(reset_ok);
 
   std::vector<Outcome> runs;
   for(int seed = b.first; seed < b.first + b.seeds; ++seed) {
@@ -212,7 +212,7 @@ int main(int argc, char** argv)
       r.relaxed = VM::relax_surface_3(P, G, s, ro).energy;
       r.relax_seconds = mdcs_bench::cpu_seconds() - t1;
       r.seconds = mdcs_bench::cpu_seconds() - t0;
-      r.peak = peak_since_reset(reset_ok, base);
+      r.peak = peak_since_reset(reset_ok);
       std::printf("seed %d %-28s discrete %.6f relaxed %.6f  %.1f s\n", seed, r.method.c_str(), r.discrete, r.relaxed,
                   r.seconds);
       std::fflush(stdout);
