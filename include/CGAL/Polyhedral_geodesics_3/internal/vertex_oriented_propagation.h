@@ -28,7 +28,9 @@
 //
 // A distance limit prunes the windows beyond it; stop targets stop the run once every target is below the
 // front: the smallest value of the vertices in the queue and of the windows waiting in lists that are not ready
-// (tracked in a second queue only when there are stop targets).
+// (tracked in a second queue only when there are stop targets). With set_shadow_pruning(true), a settled saddle
+// or boundary vertex emits windows only over the faces a shortest path through it can enter
+// (vertex_oriented_shadow.h).
 
 #ifndef CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_VERTEX_ORIENTED_PROPAGATION_H
 #define CGAL_POLYHEDRAL_GEODESICS_3_INTERNAL_VERTEX_ORIENTED_PROPAGATION_H
@@ -39,6 +41,7 @@
 #include <CGAL/Polyhedral_geodesics_3/internal/geodesic_window.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/Quaternary_heap.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_batch.h>
+#include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_shadow.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/vertex_oriented_window_lists.h>
 #include <CGAL/Polyhedral_geodesics_3/internal/unit_roundoff.h>
 
@@ -99,7 +102,7 @@ public:
     Window best_window;          // ... and that window
   };
 
-  explicit Vertex_oriented_window_propagation(const Mesh& mesh) : mesh_(mesh), batch_(mesh)
+  explicit Vertex_oriented_window_propagation(const Mesh& mesh) : mesh_(mesh), shadow_angles_(mesh), batch_(mesh)
   {
     unreached_ = FT(std::numeric_limits<double>::max() / 16);
     relative_tolerance_ = FT(64) * unit_roundoff<FT>();
@@ -187,22 +190,23 @@ public:
     reuse_ = reuse;
   }
   // Shadow pruning (exact runs of this sequential schedule; not merging, not the parallel schedule): a settled
-  // saddle or boundary vertex emits windows only over the faces that a shortest path through it can enter. Such a
-  // path arrives and leaves with an angle of at least pi on both sides (on the surface's side only, at a boundary
-  // vertex), whatever shortest path to the vertex it arrived by (with another, the angle on one side would be below
-  // pi and the path could be shortened), so the faces outside that "shadow" of the direction the vertex got its
-  // value from carry no shortest path through it; without the rule their windows are created and then trimmed by
-  // the vertices around. The direction is recorded with every lowering of such a vertex. Takes effect at the next
-  // clear().
+  // saddle or boundary vertex emits windows only over the faces that a shortest path through it can enter, those
+  // in the "shadow" of the direction it got its value from (why that is safe, the angle tables and the test:
+  // vertex_oriented_shadow.h). The direction is recorded with every lowering of such a vertex. Takes effect at the
+  // next clear().
   void set_shadow_pruning(bool on)
   {
     if(on == shadow_)
       return;
     shadow_ = on;
     reuse_ready_ = false; // the vertex flags change: the next clear() is a full one
-    if(on)
-      build_shadow_angles();
-    else
+    if(on) {
+      const std::vector<Index> with_rule = shadow_angles_.build(
+          star_begin_, star_, [this](std::size_t v) { return (vertex_flags_[v] & PSEUDO_SOURCE) != 0; });
+      for(Index v : with_rule)
+        vertex_flags_[std::size_t(v)] |= SHADOW_RULE;
+      arrival_.assign(mesh_.number_of_vertices, 0);
+    } else
       for(std::uint8_t& flags : vertex_flags_)
         flags &= std::uint8_t(~SHADOW_RULE);
   }
@@ -457,111 +461,15 @@ private:
     if(record_parents_)
       parents_[std::size_t(v)] = Parent{w.sx, w.sy, at, g, w.root};
     if(vertices_[std::size_t(v)].flags & SHADOW_RULE)
-      note_arrival(v, arrival_from_window(v, w, g, at));
+      note_arrival(v, shadow_angles_.arrival_from_window(v, w.sx, w.sy, g, at));
   }
 
-  // ------------------------------------------------------------------------------------------------
-  // Shadow pruning (see set_shadow_pruning()). Directions at a vertex v are angles around it, measured
-  // counterclockwise over its faces from the first halfedge of its star in that order (star_angle_: the angle of
-  // each halfedge leaving v; corner_angle_: the angle of its face at v; vertex_total_angle_: the sum).
-
-  void build_shadow_angles()
-  {
-    const std::size_t nv = mesh_.number_of_vertices, nh = 3 * mesh_.number_of_faces;
-    corner_angle_.assign(nh, 0);
-    star_angle_.assign(nh, 0);
-    vertex_total_angle_.assign(nv, 0);
-    arrival_.assign(nv, 0);
-    for(std::size_t h = 0; h < nh; ++h) {
-      const Point_2_ft<FT>& c = mesh_.he[h].opposite; // the corner at source(h) lies between (length, 0) and c
-      corner_angle_[h] = std::atan2(to_double_value(c.y), to_double_value(c.x));
-    }
-    for(std::size_t v = 0; v < nv; ++v) {
-      if(!(vertex_flags_[v] & PSEUDO_SOURCE) || star_begin_[v] == star_begin_[v + 1])
-        continue;
-      // The first halfedge counterclockwise: one on the border (nothing clockwise of it), else any. The next one
-      // counterclockwise leaves v along the other edge of the face: twin(prev(h)).
-      Index first = star_[std::size_t(star_begin_[v])];
-      for(Index k = star_begin_[v]; k < star_begin_[v + 1]; ++k)
-        if(mesh_.he[std::size_t(star_[std::size_t(k)])].twin < 0)
-          first = star_[std::size_t(k)];
-      double angle = 0;
-      Index h = first, count = 0;
-      do {
-        star_angle_[std::size_t(h)] = angle;
-        angle += corner_angle_[std::size_t(h)];
-        ++count;
-        h = mesh_.he[std::size_t(Mesh::prev(h))].twin;
-      } while(h >= 0 && h != first && count <= star_begin_[v + 1] - star_begin_[v]);
-      vertex_total_angle_[v] = angle;
-      // One fan of faces (a manifold vertex), not made a pseudo-source by a degenerate face: the rule holds.
-      if(count == star_begin_[v + 1] - star_begin_[v] && (h < 0 || h == first) && is_saddle_or_boundary_vertex(mesh_, v) &&
-         (h < 0) == bool(mesh_.vertex_on_boundary[v]))
-        vertex_flags_[v] |= SHADOW_RULE;
-    }
-    for(std::size_t h = 0; h < nh; ++h) // (a degenerate face at v: no rule there)
-      if(mesh_.he[h].length == FT(0) || !(mesh_.he[h].opposite.y > FT(0)))
-        for(Index v : {mesh_.source(Index(h)), mesh_.target(Index(h)), mesh_.opposite_vertex(Index(h))})
-          vertex_flags_[std::size_t(v)] &= std::uint8_t(~SHADOW_RULE);
-  }
-
-  static double angle_from(double a) // into [0, 2 pi)
-  {
-    const double two_pi = 6.28318530717958647692;
-    while(a < 0) a += two_pi;
-    while(a >= two_pi) a -= two_pi;
-    return a;
-  }
-
-  // The direction (an angle around v) back along the last segment of a path to v through window w of halfedge g:
-  // from v to the pseudo-source when v is an end of g, to the point `at` of g's edge when v is the opposite corner.
-  double arrival_from_window(Index v, const Window& w, Index g, const FT& at) const
-  {
-    const double sx = to_double_value(w.sx), sy = to_double_value(w.sy);
-    const Point_2_ft<FT>& c = mesh_.he[std::size_t(g)].opposite;
-    const double cx = to_double_value(c.x), cy = to_double_value(c.y), L = to_double_value(mesh_.he[std::size_t(g)].length);
-    if(v == mesh_.source(g)) // g leaves v: the direction's angle from g, clockwise into the face behind it if negative
-      return star_angle_[std::size_t(g)] + std::atan2(sy, sx);
-    if(v == mesh_.target(g)) { // next(g) leaves v towards c: counterclockwise from it over g's face, then beyond
-      const Index n = Mesh::next(g);
-      return star_angle_[std::size_t(n)] + angle_from(std::atan2(sy, sx - L) - std::atan2(cy, cx - L));
-    }
-    const Index p = Mesh::prev(g); // leaves v (the opposite corner) towards source(g); counterclockwise over g's face
-    return star_angle_[std::size_t(p)] + angle_from(std::atan2(-cy, to_double_value(at) - cx) - std::atan2(-cy, -cx));
-  }
-
+  // v was lowered by a path that arrives from the direction `angle` (see vertex_oriented_shadow.h).
   void note_arrival(Index v, double angle)
   {
     Vertex_record& r = vertices_[std::size_t(v)];
-    const double total = vertex_total_angle_[std::size_t(v)];
-    if(mesh_.vertex_on_boundary[std::size_t(v)])
-      angle = angle < 0 ? 0 : (angle > total ? total : angle);
-    else {
-      angle = std::fmod(angle, total);
-      if(angle < 0) angle += total;
-    }
-    arrival_[std::size_t(v)] = angle;
+    arrival_[std::size_t(v)] = shadow_angles_.normalized_arrival(v, angle);
     r.flags |= ARRIVAL_KNOWN;
-  }
-
-  // Whether the face of h (leaving v) meets the shadow of v's arrival direction: the directions at least pi from
-  // it on both sides (on the surface's side at a boundary vertex), widened by a margin for rounding.
-  bool face_in_shadow(Index v, Index h) const
-  {
-    const double pi = 3.14159265358979323846, margin = 1e-6;
-    const double total = vertex_total_angle_[std::size_t(v)], beta = arrival_[std::size_t(v)];
-    const double a = star_angle_[std::size_t(h)], corner = corner_angle_[std::size_t(h)];
-    if(mesh_.vertex_on_boundary[std::size_t(v)])
-      return a <= beta - pi + margin || a + corner >= beta + pi - margin;
-    // the face's directions as offsets from beta in [0, total), possibly wrapping past total
-    double s0 = std::fmod(a - beta, total);
-    if(s0 < 0) s0 += total;
-    const double s1 = s0 + corner, lo = pi - margin, hi = total - pi + margin;
-    if(!(lo <= hi))
-      return false; // no bend possible (a flat vertex within the margin)
-    if(s0 <= hi && s1 >= lo)
-      return true;
-    return s1 - total >= lo; // the wrapped part [0, s1 - total]
   }
 
   // A safety net for merging (and for any rounding accident): a vertex left unreached next to a reached one.
@@ -604,9 +512,9 @@ private:
       const Index hn = Mesh::next(h), hp = Mesh::prev(h);
       // the directions back to v: from target(h), the far side of the corner of hn; from source(hp), hp itself
       if(lower_along_edge(mesh_.target(h), d + mesh_.he[std::size_t(h)].length, r.source, v))
-        note_edge_arrival(mesh_.target(h), hn, corner_angle_.empty() ? 0 : corner_angle_[std::size_t(hn)]);
+        note_edge_arrival(mesh_.target(h), hn, true);
       if(lower_along_edge(mesh_.source(hp), d + mesh_.he[std::size_t(hp)].length, r.source, v))
-        note_edge_arrival(mesh_.source(hp), hp, 0);
+        note_edge_arrival(mesh_.source(hp), hp, false);
       const Index g = Mesh::next(h);         // the edge opposite v in the face of h
       const Index t = mesh_.he[std::size_t(g)].twin;
       if(t < 0)
@@ -614,7 +522,7 @@ private:
       const FT L = mesh_.he[std::size_t(g)].length;
       if(has_limit_ && d > limit_)
         continue;
-      if(shadow && !face_in_shadow(v, h))
+      if(shadow && !shadow_angles_.face_in_shadow(v, h, arrival_[std::size_t(v)]))
         continue;
       const Point_2_ft<FT>& p = mesh_.he[std::size_t(g)].opposite; // v in g's frame
       add_window(t, Window{FT(0), L, L - p.x, -p.y, d, v, lobe});
@@ -630,11 +538,12 @@ private:
     return true;
   }
 
-  // u was lowered along an edge; the edge's direction from u is `offset` counterclockwise of halfedge h (leaving u).
-  void note_edge_arrival(Index u, Index h, double offset)
+  // u was lowered along an edge: halfedge h (leaving u), or (far_side) the other edge of h's face at u. (The
+  // direction is looked up only for a vertex with the rule: the tables are empty while pruning was never on.)
+  void note_edge_arrival(Index u, Index h, bool far_side)
   {
     if(vertices_[std::size_t(u)].flags & SHADOW_RULE)
-      note_arrival(u, star_angle_[std::size_t(h)] + offset);
+      note_arrival(u, shadow_angles_.edge_direction(h, far_side));
   }
 
   // Whether a settled pseudo-source should emit its windows: always, except beyond the limit or, in a point
@@ -908,7 +817,8 @@ private:
   bool has_limit_ = false, stopped_early_ = false, record_parents_ = false;
   bool reuse_ = false, reuse_ready_ = false; // reuse between runs; ready: the arrays are sized and reset
   bool shadow_ = false;                      // shadow pruning (set_shadow_pruning())
-  std::vector<double> corner_angle_, star_angle_, vertex_total_angle_, arrival_; // ditto: per halfedge, per vertex
+  Vertex_shadow_angles<FT> shadow_angles_;   // ditto: its angle tables, built once, read-only while running
+  std::vector<double> arrival_;              // ditto, per vertex: the direction of its current value (ARRIVAL_KNOWN)
   std::vector<Index> touched_vertices_, used_lists_;
   std::vector<Index> stop_targets_;
   Backward_query* query_ = nullptr;
