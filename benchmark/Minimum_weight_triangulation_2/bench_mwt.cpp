@@ -14,7 +14,8 @@
 //   Stage times (t_*) are processor seconds of the process (std::clock, MDCS_MWT_CPU_TIMERS), medians over the
 //   repeats; t_total = their sum (t_setup: Hilbert sort, checks, hull, grid). peak_MiB: process peak so far.
 //   dp_exact_faces / dp_exact_decisions (--lmt): faces and decisions of the face programs that double
-//   precision could not separate and the exact comparison of sums of square roots decided.
+//   precision could not separate and the exact comparison of sums of square roots decided. dp_weak_faces
+//   (--lmt): faces solved by the program whose boundary walk repeats a vertex (dangling edges, pinch vertices).
 //   --trace-memory: the peak resident set of every stage (the progress callback resets the kernel's peak
 //   counter, /proc/self/clear_refs, when a stage starts), printed and written to <csv>_memory.csv; peak_MiB is
 //   then the maximum over the stages (the kernel's own peak, and /usr/bin/time's, only cover the last stage).
@@ -162,7 +163,7 @@ int main(int argc, char** argv)
                            "lp_rows", "t_setup", "t_candidates", "t_triangles", "t_lp_build", "t_lp_solve", "t_certificate",
                            "t_branch_bound", "t_total", "peak_MiB", "lmt_certain", "lmt_possible", "faces",
                            "dp_faces", "dp_triangles", "largest_face", "t_lmt", "t_face_dp", "dp_exact_faces",
-                           "dp_exact_decisions"});
+                           "dp_exact_decisions", "dp_weak_faces"});
   // --trace-memory: per stage the resident set when it starts and its peak (peak counter reset at every start)
   mdcs_bench::Table memory_table({"input", "n", "stage", "resident_at_start_MiB", "peak_MiB"});
   // the resets make the kernel's peak (VmHWM, also what /usr/bin/time reports) the peak since the last stage
@@ -216,7 +217,7 @@ int main(int argc, char** argv)
                    std::to_string(s.lmt_possible_edges), std::to_string(s.lmt_faces), std::to_string(s.lmt_solved_faces),
                    std::to_string(s.dp_triangles), std::to_string(s.lmt_largest_face), mdcs_bench::fmt(mdcs_bench::median(tl)),
                    mdcs_bench::fmt(mdcs_bench::median(tf)), std::to_string(s.dp_exact_faces),
-                   std::to_string(s.dp_exact_decisions)});
+                   std::to_string(s.dp_exact_decisions), std::to_string(s.dp_weakly_simple_faces)});
     std::fprintf(stderr, "%s n=%zu: %s, %.3f s\n", name.c_str(), p.size(), MWT::to_string(r.status), mdcs_bench::median(tot));
   };
   if(large) { sizes.push_back(5000); sizes.push_back(10000); }

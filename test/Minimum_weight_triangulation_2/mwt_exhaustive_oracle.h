@@ -40,7 +40,9 @@ struct Exhaustive_mwt
   long long triangulations_visited = 0;  ///< complete triangulations reached (within the bound)
 };
 
-inline Exhaustive_mwt exhaustive_mwt(const std::vector<Point>& p)
+/// `required`: segments every triangulation searched must contain (pairwise non-crossing valid segments, e.g.
+/// certain edges); the minimum is then taken over the triangulations that contain them.
+inline Exhaustive_mwt exhaustive_mwt(const std::vector<Point>& p, const std::vector<std::pair<int, int>>& required = {})
 {
   const int n = int(p.size());
   if(n < 3 || n > 24) throw std::invalid_argument("exhaustive_mwt: 3 to 24 points");
@@ -149,9 +151,16 @@ inline Exhaustive_mwt exhaustive_mwt(const std::vector<Point>& p)
       covered[a * n + b] = covered[b * n + c] = covered[c * n + a] = 0;
     }
   };
-  // start from the hull edges (all of them are in every triangulation)
+  // start from the hull edges (all of them are in every triangulation) and the required ones
   for(std::size_t e = 0; e < M; ++e)
     if(hull_edge[e]) add_edge(int(e));
+  for(const auto& r : required) {
+    const int e = r.first >= 0 && r.first < n && r.second >= 0 && r.second < n ? eid[r.first * n + r.second] : -1;
+    if(e < 0) throw std::invalid_argument("exhaustive_mwt: a required segment is no valid segment");
+    for(int f : chosen_list)
+      if(cross[e][f]) throw std::invalid_argument("exhaustive_mwt: two required segments cross");
+    add_edge(e);
+  }
   rec();
   // near_best counts the triangulations within the tolerance of the best at the time they were found; a
   // recount against the final optimum is not needed for uniqueness: when the best improves by more than the

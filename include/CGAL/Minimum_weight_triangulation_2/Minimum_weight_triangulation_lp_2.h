@@ -518,6 +518,7 @@ private:
     stats_.lmt_largest_face = dp.largest_face();
     stats_.dp_exact_faces = dp.number_of_exact_faces();
     stats_.dp_exact_decisions = dp.number_of_exact_decisions();
+    stats_.dp_weakly_simple_faces = dp.number_of_weakly_simple_faces();
     all = internal::Triangle_set(edges_);
     stats_.time_face_dp = since(t0);
     return out;

@@ -143,6 +143,9 @@ struct Mwt_statistics
   /// bound overlapped another candidate's) and was taken by the exact comparison of sums of square roots;
   /// the number of such decisions.
   std::size_t dp_exact_faces = 0, dp_exact_decisions = 0;
+  /// Faces solved by the dynamic program whose boundary walk repeats a vertex (weakly simple: a dangling
+  /// certain edge, or a pinch vertex where two loops of the boundary touch); counted in `lmt_solved_faces` too.
+  std::size_t dp_weakly_simple_faces = 0;
   double time_lmt = 0, time_face_dp = 0;
   /// input checks, convex hull and grid (and, in minimum_weight_triangulation_2(), the Hilbert sort of the points)
   double time_setup = 0;

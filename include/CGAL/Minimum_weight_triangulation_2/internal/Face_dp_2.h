@@ -2,11 +2,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The faces that the certain edges of the LMT-skeleton leave, and the dynamic program (Klincsek) on those
-// that are simple polygons: W(i, j) = min_k W(i, k) + W(k, j) + the new diagonals, over the empty triangles
-// whose edges are all possible and whose diagonals lie inside the polygon (exact in-cone tests). A face with
-// an input point or an island inside has no such triangulation (every triangle must be empty), so the
+// whose boundary walk is weakly simple: W(i, j) = min_k W(i, k) + W(k, j) + the new diagonals, over the empty
+// triangles whose edges are all possible and whose diagonals lie inside the face (exact in-cone tests). A face
+// with an input point or an island inside has no such triangulation (every triangle must be empty), so the
 // program fails there and the face is left to the LP. Face tracing sorts the certain edges around each
 // vertex with exact orientations.
+//
+// Weakly simple faces. The walk around a face may repeat a vertex: the two sides of a dangling edge (a spike,
+// walk ... a, b, a ...) or a pinch vertex where two loops of the boundary touch. The program then runs on the
+// walk's positions ("corners"), not on its vertices: a position is a vertex together with the face's wedge
+// there (from the direction to the next vertex of the walk counter-clockwise to the direction to the previous
+// one; at a spike tip, every direction but the one back along the edge). The wedges of the occurrences of one
+// vertex are disjoint. A diagonal joins two positions with different vertices and must leave both into their
+// wedges. A possible edge crosses no certain edge and passes through no point, so once it leaves a corner into
+// the face it stays inside until it reaches its other end, in exactly one of that vertex's wedges: the in-cone
+// tests at both ends tell which occurrences it joins. Such a diagonal cuts the face (an open disc when there is
+// no island) into the two faces of the sub-walks it closes, so Klincsek's recursion and its emptiness argument
+// hold as for simple polygons.
 //
 // Every decision of the programs (which apex, which spoke) is exact for the double coordinates: the sums are
 // compared in double with the forward error bound of Exact_length_sum_2.h; when the best candidate is not
@@ -100,7 +112,7 @@ public:
     struct Block_result
     {
       std::vector<int> dp_tri;
-      std::size_t one_point_faces = 0, exact_faces = 0, exact_decisions = 0;
+      std::size_t one_point_faces = 0, weakly_simple_faces = 0, exact_faces = 0, exact_decisions = 0;
     };
     const std::size_t face_block = 512;
     std::vector<Block_result> blocks((faces_.size() + face_block - 1) / face_block);
@@ -109,7 +121,7 @@ public:
       progress ? progress : no_progress, "face dynamic program", faces_.size());
     par.for_blocks(faces_.size(), face_block, [&](std::size_t f0, std::size_t f1, std::size_t b) {
       if(report.cancelled()) return;
-      Face_program out{blocks[b].dp_tri, 0, 0, false};
+      Face_program out{blocks[b].dp_tri, 0, 0, 0, false};
       for(std::size_t f = f0; f < f1; ++f)
         if(faces_[f].size() <= max_face) {
           out.exact = false;
@@ -118,6 +130,7 @@ public:
           if(out.exact) ++blocks[b].exact_faces;
         }
       blocks[b].one_point_faces = out.one_point_faces;
+      blocks[b].weakly_simple_faces = out.weakly_simple_faces;
       blocks[b].exact_decisions = out.exact_decisions;
       report.advance(f1 - f0);
     });
@@ -129,6 +142,7 @@ public:
       dp_tri_.insert(dp_tri_.end(), r.dp_tri.begin(), r.dp_tri.end());
       std::vector<int>().swap(r.dp_tri);
       one_point_faces_ += r.one_point_faces;
+      weakly_simple_faces_ += r.weakly_simple_faces;
       exact_faces_ += r.exact_faces;
       exact_decisions_ += r.exact_decisions;
     }
@@ -161,6 +175,8 @@ public:
 
   /// Number of faces solved with one interior point (a wheel-like face).
   std::size_t number_of_one_point_faces() const { return one_point_faces_; }
+  /// Number of solved faces whose boundary walk repeats a vertex (dangling edges, pinch vertices).
+  std::size_t number_of_weakly_simple_faces() const { return weakly_simple_faces_; }
   /// Faces where some decision of a program was ambiguous in double precision and taken exactly.
   std::size_t number_of_exact_faces() const { return exact_faces_; }
   /// Number of such exact decisions (all faces).
@@ -260,11 +276,25 @@ private:
     });
   }
 
+  // Whether the segment from the corner at position i of the walk F towards the vertex F[j] (F[j] != F[i])
+  // starts inside the face's open wedge at that corner, which runs counter-clockwise from the direction to the
+  // next vertex of the walk to the direction to the previous one. The wedge belongs to the position i, not to
+  // the vertex: a vertex repeated on the walk has one (disjoint) wedge per occurrence. Exact orientations.
   bool in_cone(const std::vector<int>& F, std::size_t i, std::size_t j) const
   {
     const std::size_t m = F.size();
     const int a = F[i], b = F[j], prev = F[(i + m - 1) % m], next = F[(i + 1) % m];
+    if(prev == next) {
+      // spike tip (a has one certain edge, walked out and back): everything but the direction back along the
+      // edge (a candidate edge passes through no point, so b is never on that ray; tested anyway)
+      if(pts_.orientation(a, prev, b) != 0) return true;
+      auto sign = [](double d) { return (d > 0) - (d < 0); };   // exact for differences of doubles
+      return sign(pts_.x(b) - pts_.x(a)) != sign(pts_.x(prev) - pts_.x(a)) ||
+             sign(pts_.y(b) - pts_.y(a)) != sign(pts_.y(prev) - pts_.y(a));
+    }
+    // convex corner, or straight (prev and next opposite: a half-plane): strictly between the two edges
     if(pts_.orientation(prev, a, next) >= 0) return pts_.orientation(a, b, prev) > 0 && pts_.orientation(b, a, next) > 0;
+    // reflex corner: not in the closed convex angle outside the face
     return !(pts_.orientation(a, b, next) >= 0 && pts_.orientation(b, a, prev) >= 0);
   }
 
@@ -290,15 +320,17 @@ private:
     return -1;
   }
 
-  // The face F (a counter-clockwise simple cycle) without interior point (c < 0) or with the one interior
-  // point c: Klincsek's program on the chains F[i..j] (indices modulo m, i < j < i + m), then, with c, a
-  // cyclic program over the spokes from c: consecutive spokes F[i], F[j] bound the triangle (c, F[i], F[j])
-  // and the chain F[i..j] closed by the chord F[i]F[j].
+  // The face F (its counter-clockwise boundary walk) without interior point (c < 0) or with the one interior
+  // point c: Klincsek's program on the chains F[i..j] of walk positions (indices modulo m, i < j < i + m), then,
+  // with c, a cyclic program over the spokes from c: consecutive spokes F[i], F[j] bound the triangle
+  // (c, F[i], F[j]) and the chain F[i..j] closed by the chord F[i]F[j]. Without c the walk may be weakly simple
+  // (repeated vertices, see the top of the file); the spoke program takes simple cycles only (a spoke to a
+  // repeated vertex would need its own wedge test; such faces are left to the LP).
   // Where a program writes: its triangles (appended) and its counts (one per block of faces).
   struct Face_program
   {
     std::vector<int>& dp_tri;
-    std::size_t one_point_faces, exact_decisions;
+    std::size_t one_point_faces, weakly_simple_faces, exact_decisions;
     bool exact;   // some decision of the current face was taken exactly
   };
 
@@ -306,10 +338,12 @@ private:
   {
     const std::size_t m = F.size();
     if(m < 3) return false;
+    bool simple;
     {
       std::vector<int> s(F);
       std::sort(s.begin(), s.end());
-      if(std::adjacent_find(s.begin(), s.end()) != s.end()) return false;   // not a simple cycle
+      simple = std::adjacent_find(s.begin(), s.end()) == s.end();
+      if(!simple && c >= 0) return false;   // the spoke program takes simple cycles only
       double area = 0;
       for(std::size_t i = 0; i < m; ++i)
         area += pts_.x(F[i]) * pts_.y(F[(i + 1) % m]) - pts_.x(F[(i + 1) % m]) * pts_.y(F[i]);
@@ -325,6 +359,7 @@ private:
       dlen[id(i, i + 1)] = 0;
       for(std::size_t j = i + 2; j < i + m; ++j) {
         if(j == i + m - 1) { dlen[id(i, j)] = 0; continue; }   // the boundary edge F[i-1] F[i]
+        if(at(i) == at(j)) continue;   // two occurrences of one vertex (weakly simple walk): no chord
         const int e = index_.find(at(i), at(j));
         if(e < 0 || state_[e] == lmt_impossible) continue;
         if(in_cone(F, i, j % m) && in_cone(F, j % m, i)) {
@@ -405,6 +440,7 @@ private:
     if(c < 0) {
       if(K[id(0, m - 1)] < 0) return false;
       emit(0, m - 1);
+      if(!simple) ++out.weakly_simple_faces;
       return true;
     }
     // one interior point: spokes c F[i]; sector (i, j) = triangle (c, F[i], F[j]) + chain (i, j)
@@ -516,7 +552,7 @@ private:
   std::vector<std::vector<int>> faces_;
   std::vector<char> solved_;
   std::vector<int> dp_tri_;
-  std::size_t one_point_faces_ = 0, exact_faces_ = 0, exact_decisions_ = 0;
+  std::size_t one_point_faces_ = 0, weakly_simple_faces_ = 0, exact_faces_ = 0, exact_decisions_ = 0;
 };
 
 } // namespace internal
