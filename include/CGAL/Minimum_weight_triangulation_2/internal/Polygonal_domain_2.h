@@ -24,9 +24,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -132,43 +132,62 @@ public:
 
   // The empty triangles of the domain, counter-clockwise index triples: their three sides are domain segments
   // and no vertex lies inside them (none lies on a side: a domain segment contains no vertex). A hole inside such
-  // a triangle would put its vertices inside, so the triangle lies in the domain. O(V^2 (V + B)) for the
-  // segments and O(V) per triangle with three segment sides. The progress callback (stage "empty triangles")
-  // is asked about a hundred times.
+  // a triangle would put its vertices inside, so the triangle lies in the domain. The segments take O(V^2 (V + B))
+  // orientation tests; the emptiness test is a bitwise AND of the sets of vertices strictly left of each side
+  // (V / 64 words per triangle, the sets O(V^3) tests for the ordered pairs of segment ends). The progress
+  // callback (stage "empty triangles") is asked about a hundred times.
   std::vector<std::array<int, 3>> empty_triangles(const std::function<bool(const char*, double)>& progress) const
   {
     const int n = int(points.size());
+    const std::size_t N = std::size_t(n), W = (N + 63) / 64;
     const auto orient = K().orientation_2_object();
-    std::vector<char> segment(std::size_t(n) * std::size_t(n), 0);
-    for(int a = 0; a < n; ++a)
-      for(int b = a + 1; b < n; ++b)
-        segment[std::size_t(a) * n + b] = segment[std::size_t(b) * n + a] = char(is_domain_segment(a, b));
-    auto seg = [&](int a, int b) { return segment[std::size_t(a) * n + b] != 0; };
-    std::vector<std::array<int, 3>> tri;
-    int step = (std::max)(1, n / 100);
+    auto ask = [&](double f) {
+      if(progress && !progress("empty triangles", f)) throw CGAL::MDCS::Operation_cancelled("empty triangles");
+    };
+    ask(0);
+    std::vector<char> segment(N * N, 0);
+    // left[(u * n + v) * W ...]: the vertices strictly left of the line u -> v, for the segments (u, v) only
+    std::vector<std::uint64_t> left;
+    std::vector<std::size_t> left_of(N * N, std::size_t(-1));
+    const int step = (std::max)(1, n / 50);
     for(int a = 0; a < n; ++a) {
-      if(progress && a % step == 0 && !progress("empty triangles", double(a) / n))
-        throw CGAL::MDCS::Operation_cancelled("empty triangles");
+      if(a % step == 0) ask(0.5 * a / n);
       for(int b = a + 1; b < n; ++b) {
-        if(!seg(a, b)) continue;
+        if(!is_domain_segment(a, b)) continue;
+        segment[std::size_t(a) * N + b] = segment[std::size_t(b) * N + a] = 1;
+        const std::size_t ab = left.size();
+        left.resize(ab + 2 * W, 0);
+        for(int v = 0; v < n; ++v) {
+          const CGAL::Orientation o = orient(points[a], points[b], points[v]);
+          if(o == CGAL::LEFT_TURN) left[ab + std::size_t(v) / 64] |= std::uint64_t(1) << (v % 64);
+          else if(o == CGAL::RIGHT_TURN) left[ab + W + std::size_t(v) / 64] |= std::uint64_t(1) << (v % 64);
+        }
+        left_of[std::size_t(a) * N + b] = ab;
+        left_of[std::size_t(b) * N + a] = ab + W;
+      }
+    }
+    std::vector<std::array<int, 3>> tri;
+    for(int a = 0; a < n; ++a) {
+      if(a % step == 0) ask(0.5 + 0.5 * a / n);
+      for(int b = a + 1; b < n; ++b) {
+        if(!segment[std::size_t(a) * N + b]) continue;
         for(int c = b + 1; c < n; ++c) {
-          if(!seg(a, c) || !seg(b, c)) continue;
+          if(!segment[std::size_t(a) * N + c] || !segment[std::size_t(b) * N + c]) continue;
           const CGAL::Orientation o = orient(points[a], points[b], points[c]);
           if(o == CGAL::COLLINEAR) continue;
-          std::array<int, 3> t = o == CGAL::LEFT_TURN ? std::array<int, 3>{a, b, c} : std::array<int, 3>{a, c, b};
+          const std::array<int, 3> t = o == CGAL::LEFT_TURN ? std::array<int, 3>{a, b, c} : std::array<int, 3>{a, c, b};
           if(outside_side(t)) continue;
+          // the corners are on the sides, never strictly left of all three
+          const std::uint64_t* l0 = &left[left_of[std::size_t(t[0]) * N + t[1]]];
+          const std::uint64_t* l1 = &left[left_of[std::size_t(t[1]) * N + t[2]]];
+          const std::uint64_t* l2 = &left[left_of[std::size_t(t[2]) * N + t[0]]];
           bool empty = true;
-          for(int v = 0; v < n && empty; ++v) {
-            if(v == a || v == b || v == c) continue;
-            empty = !(orient(points[t[0]], points[t[1]], points[v]) == CGAL::LEFT_TURN &&
-                      orient(points[t[1]], points[t[2]], points[v]) == CGAL::LEFT_TURN &&
-                      orient(points[t[2]], points[t[0]], points[v]) == CGAL::LEFT_TURN);
-          }
+          for(std::size_t w = 0; w < W && empty; ++w) empty = (l0[w] & l1[w] & l2[w]) == 0;
           if(empty) tri.push_back(t);
         }
       }
     }
-    if(progress && !progress("empty triangles", 1)) throw CGAL::MDCS::Operation_cancelled("empty triangles");
+    ask(1);
     return tri;
   }
 
@@ -370,33 +389,33 @@ struct Domain_linear_program
   template <class Domain>
   Domain_linear_program(const Domain& d, const std::vector<std::array<int, 3>>& triangles, Edge_metric metric)
   {
-    std::map<std::pair<int, int>, int> row_of;
+    const std::size_t N = d.size();
+    std::vector<int> row_of(N * N, -1);   // by a * N + b, a < b
+    auto add_row = [&](int a, int b) {
+      int& row = row_of[std::size_t(a) * N + std::size_t(b)];
+      if(row >= 0) return;
+      const bool boundary = d.is_boundary_edge(a, b);
+      row = boundary ? lp.add_row(1, 1) : lp.add_row(0, 0);
+      row_edge.emplace_back(a, b);
+      row_is_boundary.push_back(char(boundary));
+    };
     for(const auto& t : triangles)
-      for(int i = 0; i < 3; ++i) {
-        const std::pair<int, int> e(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
-        if(row_of.count(e)) continue;
-        const bool boundary = d.is_boundary_edge(e.first, e.second);
-        row_of[e] = boundary ? lp.add_row(1, 1) : lp.add_row(0, 0);
-        row_edge.push_back(e);
-        row_is_boundary.push_back(char(boundary));
-      }
+      for(int i = 0; i < 3; ++i) add_row(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
     // a boundary edge no triangle covers leaves its row without entries: the LP is infeasible, as it must be
-    for(int v = 0; v < int(d.first_interior_point); ++v) {
-      const std::pair<int, int> e(std::min(v, d.next[v]), std::max(v, d.next[v]));
-      if(!row_of.count(e)) {
-        row_of[e] = lp.add_row(1, 1);
-        row_edge.push_back(e);
-        row_is_boundary.push_back(1);
-      }
-    }
+    for(int v = 0; v < int(d.first_interior_point); ++v) add_row(std::min(v, d.next[v]), std::max(v, d.next[v]));
+    lp.cost.reserve(triangles.size());
+    lp.col_lower.reserve(triangles.size());
+    lp.col_upper.reserve(triangles.size());
+    lp.column_start.reserve(triangles.size() + 1);
+    lp.row_index.reserve(3 * triangles.size());
+    lp.value.reserve(3 * triangles.size());
     for(const auto& t : triangles) {
       int rows[3];
       double coef[3];
       double cost = 0;
       for(int i = 0; i < 3; ++i) {
         const int a = t[i], b = t[(i + 1) % 3];
-        const std::pair<int, int> e(std::min(a, b), std::max(a, b));
-        rows[i] = row_of[e];
+        rows[i] = row_of[std::size_t(std::min(a, b)) * N + std::size_t(std::max(a, b))];
         const bool boundary = row_is_boundary[std::size_t(rows[i])] != 0;
         // a side walked a -> b has the triangle on its left: +1 when a < b, -1 otherwise (boundary: always +1)
         coef[i] = boundary ? 1.0 : (a < b ? 1.0 : -1.0);
