@@ -62,20 +62,8 @@ Mwt_result polygonal_domain_mwt(const Polygonal_domain_2<K>& d, const Mwt_option
   };
 
   // the LP solver: options.solver as in minimum_weight_triangulation_2() (automatic: CLP, else GLPK)
-  Lp_solve_control control;
-  control.time_limit = options.lp_time_limit;
-  if(options.progress) {
-    const auto progress = options.progress;
-    control.keep_going = [progress](double f) { return progress("LP solve", f); };
-  }
-  Lp_solver_choice c = options.solver;
-  if(c == Lp_solver_choice::automatic) {
-#if defined(MDCS_HAS_CLP)
-    c = Lp_solver_choice::clp;
-#else
-    c = Lp_solver_choice::glpk;
-#endif
-  }
+  const Lp_solve_control control = internal::lp_solve_control(options);
+  const Lp_solver_choice c = resolved_solver_choice(options.solver);
   if(options.progress && !options.progress("LP solve", 0)) throw CGAL::MDCS::Operation_cancelled("LP solve");
   t0 = Clock::now();
   Linear_program_solution sol;
@@ -98,6 +86,8 @@ Mwt_result polygonal_domain_mwt(const Polygonal_domain_2<K>& d, const Mwt_option
     solved = true;
   }
 #endif
+  (void)control;
+  (void)c;
   if(!solved)
     throw std::runtime_error("polygon_with_holes_mwt_2: the requested LP solver was not built in (a domain with holes "
                              "or interior points needs CLP or GLPK)");
