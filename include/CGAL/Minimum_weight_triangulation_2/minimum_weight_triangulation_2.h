@@ -26,6 +26,33 @@
 namespace CGAL {
 namespace Minimum_weight_triangulation_2 {
 
+namespace internal {
+
+// The solver of `options.solver` with `automatic` resolved: CLP when built in, else GLPK.
+inline Lp_solver_choice resolved_solver_choice(Lp_solver_choice c)
+{
+  if(c != Lp_solver_choice::automatic) return c;
+#if defined(MDCS_HAS_CLP)
+  return Lp_solver_choice::clp;
+#else
+  return Lp_solver_choice::glpk;
+#endif
+}
+
+// The time limit and the progress callback (stage "LP solve") of the options, for a built-in solver model.
+inline Lp_solve_control lp_solve_control(const Mwt_options& options)
+{
+  Lp_solve_control control;
+  control.time_limit = options.lp_time_limit;
+  if(options.progress) {
+    const auto progress = options.progress;
+    control.keep_going = [progress](double f) { return progress("LP solve", f); };
+  }
+  return control;
+}
+
+} // namespace internal
+
 /// Whether a built-in solver model was compiled in (MDCS_HAS_CLP / MDCS_HAS_GLPK).
 inline bool has_lp_solver(Lp_solver_choice c)
 {
@@ -147,12 +174,7 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
 {
   if(!(options.lp_time_limit >= 0) || !(options.branch_and_bound_time_limit >= 0))
     throw std::invalid_argument("minimum_weight_triangulation_2: the time limits must be >= 0 seconds (0: none), not NaN");
-  Lp_solve_control control;
-  control.time_limit = options.lp_time_limit;
-  if(options.progress) {
-    const auto progress = options.progress;
-    control.keep_going = [progress](double f) { return progress("LP solve", f); };
-  }
+  const Lp_solve_control control = internal::lp_solve_control(options);
   std::function<Linear_program_solution(const Sparse_linear_program&)> bb;
 #if defined(MDCS_HAS_GLPK)
   const double limit = options.branch_and_bound_time_limit;
@@ -163,14 +185,7 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
     return GLPK_linear_program_solver().solve_binary(lp, limit, keep_going);
   };
 #endif
-  Lp_solver_choice c = options.solver;
-  if(c == Lp_solver_choice::automatic) {
-#if defined(MDCS_HAS_CLP)
-    c = Lp_solver_choice::clp;
-#else
-    c = Lp_solver_choice::glpk;
-#endif
-  }
+  const Lp_solver_choice c = internal::resolved_solver_choice(options.solver);
   switch(c) {
 #if defined(MDCS_HAS_CLP)
     case Lp_solver_choice::clp: {
