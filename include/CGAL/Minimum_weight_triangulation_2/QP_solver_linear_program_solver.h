@@ -66,11 +66,13 @@ private:
   `QP_solver` has no progress callback and no iteration or time limit: `CGAL::solve_linear_program()` constructs
   a `CGAL::QP_solver`, whose constructor (CGAL/QP_solver/Initialization.h) calls `init()` and `solve()`, and
   `solve()` is the loop `while (phase() < 3) { pivot_step(); }` with no other exit (CGAL 5.5;
-  `CGAL::Quadratic_program_options` only sets the verbosity, the pricing strategy, the validation and logging). The control's `keep_going`
-  (`set_control()`) is therefore asked once before the solve, and its time limit is not enforced. What can be
+  `CGAL::Quadratic_program_options` only sets the verbosity, the pricing strategy, the validation and logging).
+  The control's `keep_going` (`set_control()`) is therefore asked once before the solve, and its time limit is
+  not enforced. What can be
   bounded is the size of the program: `set_max_columns()` refuses larger programs up front with
   `Linear_program_too_large`. Meant for small programs: the MWT program of 20 uniform points (164 columns) took
-  0.84 s of CPU time on a loaded machine, 10 points on a random wheel (658 columns) 22 s (exact GLPK: 2 and 9 ms);
+  0.84 s of CPU time on a loaded machine, a random wheel of 20 points on the circle (658 columns) 16-22 s (exact
+  GLPK: 2 and 9 ms);
   the manual has the measured scaling.
 
   \tparam ET an exact number type accepted by `CGAL::solve_linear_program()`.
