@@ -27,7 +27,8 @@ Command_spec mwt_spec()
     text_option("solver", "S", "clp", "clp (dual simplex), glpk, exact (GLPK + rational verification), qp (CGAL's exact\n"
                 "QP_solver: the LP optimum in rational arithmetic; small inputs only, see --qp-max-columns)",
                 {"clp", "glpk", "exact", "qp"}),
-    integer_option("qp-max-columns", "N", std::to_string(MWT::Mwt_options().qp_max_columns), 0, 1e9, "with --solver qp: refuse an LP of more than N columns (empty\n"
+    integer_option("qp-max-columns", "N", std::to_string(mwt_detail::MWT::Mwt_options().qp_max_columns), 0, 1e9,
+                   "with --solver qp: refuse an LP of more than N columns (empty\n"
                    "triangles) before solving it, exit code 1 (0: no limit). QP_solver cannot be interrupted once\n"
                    "started and its time grows about like the cube of the columns: 550 took up to 31 s, the\n"
                    "default up to about 45 s (extrapolated; the LP size is in the report)"),
