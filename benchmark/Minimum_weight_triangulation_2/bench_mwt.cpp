@@ -30,6 +30,12 @@
 //   --wheel-trials T random wheels (default 200) for each k = K1..K2 points on the circle; the fractions settled by
 //   the LP alone and by the LMT-skeleton alone with 95 % intervals, in <csv> and the plot <csv minus .csv>.svg.
 //   Exit code 1 when an integral LP weight differs from the LMT pipeline's.
+//   --qp-scaling: the exact QP_solver model's processor time against the LP size instead (mwt_qp_scaling.h):
+//   uniform, clustered, regular and random wheels for each of --sizes (points, or points on the circle), each
+//   family until a solve takes longer than --qp-stop S seconds (default 30); medians of --repeats runs of the solves
+//   under 2 s; a family also stops at an LP of more than --qp-columns C columns (default 1000, 0: none; listed,
+//   not solved); --qp-families: a comma-separated subset of uniform,clustered,wheel,random_wheel. Exit code 1
+//   when an optimum differs from exact GLPK's.
 
 // stage times in processor time (std::clock): the benchmark machine may be shared
 #define MDCS_MWT_CPU_TIMERS 1
@@ -37,6 +43,7 @@
 #include <CGAL/Minimum_weight_triangulation_2.h>
 
 #include "mdcs_bench.h"
+#include "mwt_qp_scaling.h"
 #include "mwt_random_wheels.h"
 #include "mwt_thread_scaling.h"
 
@@ -98,6 +105,10 @@ int main(int argc, char** argv)
   bool random_wheels = false;
   int wheel_k_min = 0, wheel_k_max = 0;
   long wheel_trials = 200;
+  bool qp_scaling = false;
+  double qp_stop = 30;
+  long qp_columns = 1000;
+  std::string qp_families = "uniform,clustered,wheel,random_wheel";
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--large") large = true;
@@ -115,6 +126,10 @@ int main(int argc, char** argv)
       random_wheels = true;
       if(std::sscanf(argv[++i], "%d..%d", &wheel_k_min, &wheel_k_max) != 2) wheel_k_min = wheel_k_max = 0;
     }
+    else if(a == "--qp-scaling") qp_scaling = true;
+    else if(a == "--qp-stop" && i + 1 < argc) qp_stop = std::atof(argv[++i]);
+    else if(a == "--qp-families" && i + 1 < argc) qp_families = argv[++i];
+    else if(a == "--qp-columns" && i + 1 < argc) qp_columns = std::max(0L, std::atol(argv[++i]));
     else if(a == "--wheel-trials" && i + 1 < argc) wheel_trials = std::atol(argv[++i]);
     else if(a == "--threads" && i + 1 < argc) {
       std::string list = argv[++i];
@@ -134,7 +149,11 @@ int main(int argc, char** argv)
         pos = comma == std::string::npos ? list.size() : comma + 1;
       }
     }
-    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R] [--sets S] [--max-wheel K] [--trace-memory] [--csv FILE] [--threads T1,T2,.. [--project-total S]] [--random-wheels K1..K2 [--wheel-trials T]]\n"); return 2; }
+    else { std::fprintf(stderr, "usage: bench_mwt [--large] [--sizes N1,N2,..] [--uniform-only] [--no-random] [--lmt] [--bb-limit S] [--repeats R] [--sets S] [--max-wheel K] [--trace-memory] [--csv FILE] [--threads T1,T2,.. [--project-total S]] [--random-wheels K1..K2 [--wheel-trials T]] [--qp-scaling [--qp-stop S] [--qp-columns C] [--qp-families F1,F2,..]]\n"); return 2; }
+  }
+  if(qp_scaling) {
+    std::printf("QP_solver scaling: processor seconds of the exact LP solve\n");
+    return mwt_qp_scaling::run<K>(sizes, repeats, qp_stop, std::size_t(qp_columns), qp_families, csv) ? 0 : 1;
   }
   if(random_wheels) {
     if(wheel_k_min < 3 || wheel_k_max <= wheel_k_min || wheel_trials < 1) {

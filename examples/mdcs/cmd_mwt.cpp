@@ -24,13 +24,22 @@ Command_spec mwt_spec()
     integer_option("wheel", "K", "", 3, 100000, "a centre and K points on the unit circle (odd K: fractional LP)"),
     text_option("distribution", "D", "uniform", "uniform, clustered or normal (with --random)", {"uniform", "clustered", "normal"}),
     integer_option("seed", "S", "1", 0, 4294967295.0, "random seed (with --random)"),
-    text_option("solver", "S", "clp", "clp (dual simplex), glpk, exact (GLPK + rational verification)", {"clp", "glpk", "exact"}),
+    text_option("solver", "S", "clp", "clp (dual simplex), glpk, exact (GLPK + rational verification), qp (CGAL's exact\n"
+                "QP_solver: the LP optimum in rational arithmetic; small inputs only, see --qp-max-columns)",
+                {"clp", "glpk", "exact", "qp"}),
+    integer_option("qp-max-columns", "N", std::to_string(mwt_detail::MWT::Mwt_options().qp_max_columns), 0, 1e9,
+                   "with --solver qp: refuse an LP of more than N columns (empty\n"
+                   "triangles) before solving it, exit code 1 (0: no limit). QP_solver cannot be interrupted once\n"
+                   "started and its time grows about like the cube of the columns: 550 took up to 31 s, the\n"
+                   "default up to about 45 s (extrapolated; the LP size is in the report)"),
     text_option("metric", "M", "L2", "L2, L1 or Linf (L1/Linf: no pruning, small inputs only)", {"L2", "L1", "Linf"}),
     flag_option("no-pruning", "use every segment as a candidate edge (O(n^3) triangles)"),
     flag_option("lp-only", "do not resolve a fractional LP optimum by branch and bound"),
     real_option("time-limit", "S", "", 0, 1e7, "seconds (wall clock) for the LP solve and, separately, for the branch and bound\n"
                 "of a fractional optimum (0: none; not given: no limit on the LP, 300 s on branch and\n"
-                "bound); at the LP's limit: status time_limit_reached, no triangulation, exit code 1"),
+                "bound); at the LP's limit: status time_limit_reached, no triangulation, exit code 1. With\n"
+                "--solver qp only branch and bound is limited: QP_solver's LP solve cannot be stopped\n"
+                "(--qp-max-columns bounds it instead)"),
     flag_option("lmt", "LMT-skeleton + dynamic program on its faces, the LP only for the rest (L2 only)"),
   };
   add_common_options(s, Common_options{"mwt_output", true, true});
@@ -39,7 +48,8 @@ Command_spec mwt_spec()
     "digits), mwt.svg/.png (not with --no-picture), report.txt, summary.json.\n"
     "Exit code 1 also when no triangulation was found: the LP solver failed (solver_failed), stopped at --time-limit\n"
     "(time_limit_reached), or branch and bound ran out of time on a fractional optimum (fractional_bound_only; with\n"
-    "--lp-only that status is the answer asked for, exit code 0). The report says why.\n";
+    "--lp-only that status is the answer asked for, exit code 0), or --solver qp refused an LP larger than\n"
+    "--qp-max-columns (the message gives its size; no output files). The report says why.\n";
   return s;
 }
 
@@ -53,7 +63,10 @@ int run_mwt_command(Invocation& run)
     throw Usage_error("--distribution and --seed apply to --random only");
   MWT::Mwt_options opt;
   const std::string solver = o.text("solver"), metric = o.text("metric");
-  opt.solver = solver == "glpk" ? MWT::Lp_solver_choice::glpk : solver == "exact" ? MWT::Lp_solver_choice::exact : MWT::Lp_solver_choice::clp;
+  opt.solver = solver == "glpk" ? MWT::Lp_solver_choice::glpk : solver == "exact" ? MWT::Lp_solver_choice::exact
+              : solver == "qp" ? MWT::Lp_solver_choice::qp_solver : MWT::Lp_solver_choice::clp;
+  if(o.given("qp-max-columns") && solver != "qp") throw Usage_error("--qp-max-columns applies to --solver qp only");
+  opt.qp_max_columns = std::size_t(o.integer("qp-max-columns"));
   if(!MWT::has_lp_solver(opt.solver)) throw std::runtime_error("the solver '" + solver + "' is not built in");
   opt.metric = metric == "L1" ? MWT::Edge_metric::L1 : metric == "Linf" ? MWT::Edge_metric::Linf : MWT::Edge_metric::L2;
   if(o.flag("lmt") && metric != "L2") throw Usage_error("--lmt needs --metric L2");
@@ -73,7 +86,13 @@ int run_mwt_command(Invocation& run)
                                                   : read_points(o.positional().front());
   const double seconds_read = seconds_since(t_read);
   const auto folder = prepare_output_folder(o.text("output"));
-  const MWT::Mwt_result r = MWT::minimum_weight_triangulation_2(p, opt);
+  const MWT::Mwt_result r = [&] {
+    try {
+      return MWT::minimum_weight_triangulation_2(p, opt);
+    } catch(const MWT::Linear_program_too_large& e) {   // exit code 1, with the option that raises the limit
+      throw std::runtime_error(std::string(e.what()) + " (--qp-max-columns " + std::to_string(e.limit()) + ")");
+    }
+  }();
   check_mwt_result(r);
   const std::string text = report(r) + "threads           " + threads_text(run.threads) + "\n";
   std::cout << text;

@@ -155,7 +155,9 @@ inline std::string report(const MWT::Mwt_result& r)
     << "weight            " << r.weight << "\n"
     << "lower bound       " << r.lower_bound << "\n"
     << "LP optimum        " << r.lp_objective << (r.lp_integral ? " (integral)" : " (fractional)") << "\n"
-    << "solver            " << r.solver << (r.lp_exact ? " (verified in rational arithmetic)" : "") << "\n"
+    << "solver            " << r.solver
+    << (!r.lp_exact ? "" : r.solver == "qp-solver" ? " (exact LP optimum: simplex in rational arithmetic)"
+                                                   : " (verified in rational arithmetic)") << "\n"
     << "candidate edges   " << s.candidate_edges << "\n"
     << "empty triangles   " << s.empty_triangles << " (LP columns " << s.lp_columns << ", rows " << s.lp_rows << ")\n"
     << std::setprecision(4) << "time [s]          setup " << s.time_setup << ", candidates " << s.time_candidates

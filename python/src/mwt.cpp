@@ -40,10 +40,26 @@ MWT::Lp_solver_choice parse_solver(const std::string& s)
   else if(s == "clp") c = MWT::Lp_solver_choice::clp;
   else if(s == "glpk") c = MWT::Lp_solver_choice::glpk;
   else if(s == "exact") c = MWT::Lp_solver_choice::exact;
-  else throw Value_error("mdcs: unknown LP solver '" + s + "'; use 'auto', 'clp', 'glpk' or 'exact'");
+  else if(s == "qp") c = MWT::Lp_solver_choice::qp_solver;
+  else throw Value_error("mdcs: unknown LP solver '" + s + "'; use 'auto', 'clp', 'glpk', 'exact' or 'qp'");
   if(!MWT::has_lp_solver(c))
     throw Value_error("mdcs: the LP solver '" + s + "' was not built into this module (needs COIN-OR CLP or GLPK)");
   return c;
+}
+
+// Mwt_options::qp_max_columns: an integer >= 0 (0: no limit).
+std::size_t checked_column_limit(py::handle object)
+{
+  const char* what = "mdcs: qp_max_columns must be an integer >= 0 (0: no limit)";
+  if(PyBool_Check(object.ptr()) || !PyIndex_Check(object.ptr())) throw Value_error(what);
+  long long n = 0;
+  try {
+    n = py::reinterpret_borrow<py::object>(object).cast<long long>();
+  } catch(const py::cast_error&) {
+    throw Value_error(what);   // beyond long long
+  }
+  if(n < 0) throw Value_error(std::string(what) + ", got " + std::to_string(n));
+  return std::size_t(n);
 }
 
 py::dict statistics_dict(const MWT::Mwt_statistics& s)
@@ -78,7 +94,8 @@ py::dict minimum_weight_triangulation(py::handle points, const std::string& metr
                                       const std::string& solver, bool resolve_fractional,
                                       double branch_and_bound_time_limit, double certificate_tolerance,
                                       double integrality_tolerance, bool validate, bool use_lmt_skeleton,
-                                      bool exact_support_certificate, py::handle threads, py::object progress)
+                                      bool exact_support_certificate, py::handle threads, py::object progress,
+                                      py::handle qp_max_columns)
 {
   const std::size_t thread_count = checked_thread_count(threads);
   const Double_array P = checked_doubles(points, "points", 2, 2, true, "(n, 2)");
@@ -101,6 +118,7 @@ py::dict minimum_weight_triangulation(py::handle points, const std::string& metr
   options.use_lmt_skeleton = use_lmt_skeleton;
   options.exact_support_certificate = exact_support_certificate;
   options.threads = thread_count;
+  options.qp_max_columns = checked_column_limit(qp_max_columns);
   std::vector<Point_2> pts;
   pts.reserve(n);
   for(std::size_t i = 0; i < n; ++i) pts.emplace_back(P.data()[2 * i], P.data()[2 * i + 1]);
@@ -109,8 +127,12 @@ py::dict minimum_weight_triangulation(py::handle points, const std::string& metr
   options.progress = [&bridge](const char* stage, double fraction) { return bridge(stage, fraction); };
   // The parallel pipeline gives the same triangulation, weight and certificate for every thread count.
   MWT::Mwt_result r = run_without_gil(bridge, [&] {
-    return thread_count == 1 ? MWT::minimum_weight_triangulation_2(pts, options)
-                             : MWT::minimum_weight_triangulation_2<CGAL::Parallel_if_available_tag>(pts, options);
+    try {
+      return thread_count == 1 ? MWT::minimum_weight_triangulation_2(pts, options)
+                               : MWT::minimum_weight_triangulation_2<CGAL::Parallel_if_available_tag>(pts, options);
+    } catch(const MWT::Linear_program_too_large& e) {   // ValueError naming the keyword that raises the limit
+      throw Value_error("mdcs: " + std::string(e.what()) + " (qp_max_columns=" + std::to_string(e.limit()) + ")");
+    }
   });
   // A cancelled branch and bound ends with a status instead of an exception: report the interruption.
   if(bridge.has_stashed_error()) bridge.raise_stashed_error();
@@ -144,15 +166,17 @@ void bind_mwt(py::module_& m)
   w.def("minimum_weight_triangulation", &minimum_weight_triangulation, py::arg("points"), py::arg("metric"),
         py::arg("pruning"), py::arg("solver"), py::arg("resolve_fractional"), py::arg("branch_and_bound_time_limit"),
         py::arg("certificate_tolerance"), py::arg("integrality_tolerance"), py::arg("validate"),
-        py::arg("use_lmt_skeleton"), py::arg("exact_support_certificate"), py::arg("threads"), py::arg("progress"));
+        py::arg("use_lmt_skeleton"), py::arg("exact_support_certificate"), py::arg("threads"), py::arg("progress"),
+        py::arg("qp_max_columns"));
   py::list solvers;
   solvers.append("auto");
-  for(const char* name : {"clp", "glpk", "exact"})
-    if(MWT::has_lp_solver(name[0] == 'c' ? MWT::Lp_solver_choice::clp
-                          : name[0] == 'g' ? MWT::Lp_solver_choice::glpk
-                                           : MWT::Lp_solver_choice::exact))
-      solvers.append(name);
+  const std::pair<const char*, MWT::Lp_solver_choice> choices[] = {{"clp", MWT::Lp_solver_choice::clp},
+      {"glpk", MWT::Lp_solver_choice::glpk}, {"exact", MWT::Lp_solver_choice::exact},
+      {"qp", MWT::Lp_solver_choice::qp_solver}};
+  for(const auto& c : choices)
+    if(MWT::has_lp_solver(c.second)) solvers.append(c.first);
   w.attr("solvers") = py::tuple(solvers);
+  w.attr("qp_max_columns_default") = MWT::Mwt_options().qp_max_columns;
 }
 
 } // namespace mdcs_python

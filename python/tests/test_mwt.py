@@ -40,7 +40,8 @@ def test_the_13_wheel():
     assert r.triangles.shape == (13, 3) and r.triangles.dtype == np.int64
 
 
-@pytest.mark.parametrize("solver", [s for s in mdcs.mwt.SOLVERS if s != "exact"])
+# 60 points: "qp" (CGAL's exact QP_solver, minutes at this size) has its own small tests below
+@pytest.mark.parametrize("solver", [s for s in mdcs.mwt.SOLVERS if s not in ("exact", "qp")])
 def test_random_points_every_solver(solver):
     rng = np.random.default_rng(7)
     p = rng.random((60, 2))
@@ -85,3 +86,37 @@ def test_the_same_triangulation_for_every_thread_count():
     for bad in (-1, 2000, 2.0):
         with pytest.raises(ValueError, match="threads"):
             mdcs.mwt.minimum_weight_triangulation(p[:10], threads=bad, progress=False)
+
+
+def canonical_triangles(triangles):
+    """Each triangle rotated to start at its smallest index, the rows sorted."""
+    t = np.array([np.roll(row, -int(np.argmin(row))) for row in triangles])
+    return t[np.lexsort(t.T[::-1])]
+
+
+def test_the_qp_solver_equals_exact_glpk():
+    assert "qp" in mdcs.mwt.SOLVERS
+    rng = np.random.default_rng(11)
+    for p in (rng.random((12, 2)), wheel(13)):  # an integral and a fractional LP optimum
+        exact = mdcs.mwt.minimum_weight_triangulation(p, solver="exact", progress=False)
+        qp = mdcs.mwt.minimum_weight_triangulation(p, solver="qp", progress=False)
+        assert qp.solver == "qp-solver" and qp.lp_exact
+        assert qp.status == exact.status
+        assert qp.lp_objective == pytest.approx(exact.lp_objective, rel=1e-14)
+        assert qp.weight == pytest.approx(exact.weight, rel=1e-14)
+        assert np.array_equal(canonical_triangles(qp.triangles), canonical_triangles(exact.triangles))
+        assert qp.weight == pytest.approx(weight(p, qp.triangles), rel=1e-12)
+    assert qp.status == "optimal_after_branch_and_bound" and not qp.lp_integral  # the 13-wheel
+
+
+def test_the_qp_solver_column_limit():
+    p = np.random.default_rng(12).random((12, 2))
+    r = mdcs.mwt.minimum_weight_triangulation(p, solver="qp", qp_max_columns=0, progress=False)  # 0: no limit
+    columns = r.statistics["lp_columns"]
+    at_limit = mdcs.mwt.minimum_weight_triangulation(p, solver="qp", qp_max_columns=columns, progress=False)
+    assert at_limit.weight == r.weight
+    with pytest.raises(ValueError, match=f"has {columns} columns.*more than the limit of {columns - 1} .*qp_max_columns"):
+        mdcs.mwt.minimum_weight_triangulation(p, solver="qp", qp_max_columns=columns - 1, progress=False)
+    for bad in (-1, 2.5, True, "10"):
+        with pytest.raises(ValueError, match="qp_max_columns must be an integer"):
+            mdcs.mwt.minimum_weight_triangulation(p, solver="qp", qp_max_columns=bad, progress=False)

@@ -176,3 +176,128 @@ TEST_CASE("QP_solver LP model: the MWT programs agree with exact GLPK", "[mwt][s
   }
 }
 #endif
+
+namespace {
+
+// The triangles of a run as a sorted list, each rotated to start at its smallest index (orientation kept).
+std::vector<std::array<int, 3>> qp_normalized(std::vector<std::array<int, 3>> t)
+{
+  for(auto& a : t) std::rotate(a.begin(), std::min_element(a.begin(), a.end()), a.end());
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+MWT::Mwt_options qp_choice(std::size_t max_columns = MWT::Mwt_options().qp_max_columns)
+{
+  MWT::Mwt_options o;
+  o.solver = MWT::Lp_solver_choice::qp_solver;
+  o.qp_max_columns = max_columns;
+  return o;
+}
+
+} // namespace
+
+TEST_CASE("QP_solver choice: minimum_weight_triangulation_2(points, options) with Lp_solver_choice::qp_solver",
+          "[mwt][solver][qp_solver]")
+{
+  CHECK(MWT::has_lp_solver(MWT::Lp_solver_choice::qp_solver));   // CGAL's own solver: always built in
+#if defined(MDCS_HAS_GLPK)
+  // Oracles: the exact GLPK choice (same triangles, weight, LP optimum) and brute force on the smallest sets; the
+  // 13-wheel has a fractional LP optimum, resolved by GLPK's branch and bound after either solver.
+  const std::vector<std::vector<Point>> sets = {uniform_points(7, 31), uniform_points(8, 32), uniform_points(12, 33),
+                                                clustered_points(12, 34), wheel(13)};
+  for(std::size_t i = 0; i < sets.size(); ++i) {
+    INFO("set " << i);
+    MWT::Mwt_options exact;
+    exact.solver = MWT::Lp_solver_choice::exact;
+    const MWT::Mwt_result ref = MWT::minimum_weight_triangulation_2(sets[i], exact);
+    const MWT::Mwt_result r = MWT::minimum_weight_triangulation_2(sets[i], qp_choice());
+    INFO(r.message);
+    CHECK(r.solver == std::string("qp-solver"));
+    CHECK(r.lp_exact);
+    CHECK(r.status == ref.status);
+    CHECK(r.lp_integral == ref.lp_integral);
+    CHECK(r.lp_objective == Approx(ref.lp_objective).epsilon(1e-14));
+    CHECK(r.weight == Approx(ref.weight).epsilon(1e-14));
+    CHECK(qp_normalized(r.triangles) == qp_normalized(ref.triangles));
+    CHECK(r.lower_bound <= r.weight);
+    CHECK(independent_triangulation_check(sets[i], r.triangles));
+    CHECK(r.statistics.lp_columns > 0);
+    if(sets[i].size() <= 8) CHECK(r.weight == Approx(brute_force_mwt(sets[i])).epsilon(1e-12));
+    if(i == 4) {
+      CHECK(!r.lp_integral);
+      CHECK(r.status == MWT::Mwt_status::optimal_after_branch_and_bound);
+    } else {
+      CHECK(r.status == MWT::Mwt_status::certified_optimal);
+    }
+  }
+  // a fractional optimum without branch and bound: the exact LP bound only, as with the other solvers
+  MWT::Mwt_options lp_only = qp_choice();
+  lp_only.resolve_fractional = false;
+  const MWT::Mwt_result frac = MWT::minimum_weight_triangulation_2(wheel(13), lp_only);
+  CHECK(frac.status == MWT::Mwt_status::fractional_bound_only);
+  CHECK(frac.lp_exact);
+  CHECK(frac.lp_objective == Approx(18.7636).margin(5e-5));   // the thesis's LP value of the 13-wheel
+#endif
+  // the extremes of the coordinate range: the weight scales with the points, the triangles stay
+  const std::vector<Point> unit = uniform_points(10, 36);
+  const MWT::Mwt_result base = MWT::minimum_weight_triangulation_2(unit, qp_choice());
+  REQUIRE(base.status == MWT::Mwt_status::certified_optimal);
+  for(int e : {499, -399}) {
+    INFO("exponent " << e);
+    std::vector<Point> p;
+    for(const Point& q : unit) p.emplace_back(std::ldexp(q.x(), e), std::ldexp(q.y(), e));
+    const MWT::Mwt_result r = MWT::minimum_weight_triangulation_2(p, qp_choice());
+    CHECK(r.status == MWT::Mwt_status::certified_optimal);
+    CHECK(std::ldexp(r.weight, -e) == Approx(base.weight).epsilon(1e-12));
+    CHECK(qp_normalized(r.triangles) == qp_normalized(base.triangles));
+  }
+}
+
+TEST_CASE("QP_solver choice: the column limit refuses larger programs before the solve", "[mwt][solver][qp_solver]")
+{
+  const std::vector<Point> p = uniform_points(12, 37);
+  const MWT::Mwt_result unlimited = MWT::minimum_weight_triangulation_2(p, qp_choice(0));   // 0: no limit
+  REQUIRE(unlimited.status == MWT::Mwt_status::certified_optimal);
+  const std::size_t columns = unlimited.statistics.lp_columns;
+  REQUIRE(columns > 1);
+  // exactly at the limit: solved, with the same answer
+  const MWT::Mwt_result at_limit = MWT::minimum_weight_triangulation_2(p, qp_choice(columns));
+  CHECK(at_limit.weight == unlimited.weight);
+  // one column over: Linear_program_too_large (a std::length_error) with the sizes, and the solver never started
+  bool lp_solve_asked = false;
+  MWT::Mwt_options o = qp_choice(columns - 1);
+  o.progress = [&lp_solve_asked](const char* stage, double) {
+    if(std::string(stage) == "LP solve") lp_solve_asked = true;
+    return true;
+  };
+  try {
+    MWT::minimum_weight_triangulation_2(p, o);
+    FAIL("no exception above the column limit");
+  } catch(const MWT::Linear_program_too_large& e) {
+    CHECK(e.columns() == columns);
+    CHECK(e.limit() == columns - 1);
+    CHECK(e.rows() == unlimited.statistics.lp_rows);
+    CHECK_THAT(std::string(e.what()), Catch::Contains(std::to_string(columns) + " columns") &&
+                         Catch::Contains("more than the limit of " + std::to_string(columns - 1)));
+  }
+  CHECK(lp_solve_asked);   // asked before the refusal, as before any solve
+  CHECK_THROWS_AS(MWT::minimum_weight_triangulation_2(p, qp_choice(1)), std::length_error);
+  // the same guard on the model itself; the other solver choices ignore the limit
+  MWT::Minimum_weight_triangulation_lp_2<K> m(p);
+  m.build_linear_program();
+  Qp_lp_solver limited;
+  limited.set_max_columns(columns - 1);
+  CHECK(limited.max_columns() == columns - 1);
+  CHECK_THROWS_AS(limited.solve(m.linear_program()), MWT::Linear_program_too_large);
+#if defined(MDCS_HAS_GLPK)
+  MWT::Mwt_options glpk;
+  glpk.solver = MWT::Lp_solver_choice::glpk;
+  glpk.qp_max_columns = 1;
+  CHECK(MWT::minimum_weight_triangulation_2(p, glpk).weight == Approx(unlimited.weight).epsilon(1e-14));
+#endif
+  // the progress callback can still cancel just before the (uninterruptible) solve
+  MWT::Mwt_options cancel = qp_choice();
+  cancel.progress = [](const char* stage, double) { return std::string(stage) != "LP solve"; };
+  CHECK_THROWS_AS(MWT::minimum_weight_triangulation_2(p, cancel), CGAL::MDCS::Operation_cancelled);
+}

@@ -23,8 +23,10 @@ enum class Edge_metric { L2, L1, Linf };
 /// Which edges may carry triangles. `diamond` is valid for the Euclidean metric only.
 enum class Pruning { automatic, none, diamond };
 
-/// Built-in LP solver models.
-enum class Lp_solver_choice { automatic, clp, glpk, exact };
+/// Built-in LP solver models: `clp` (COIN-OR CLP's dual simplex), `glpk`, `exact` (GLPK's simplex verified
+/// in rational arithmetic), `qp_solver` (CGAL's exact `QP_solver`: `QP_solver_linear_program_solver`, small
+/// programs only, see `Mwt_options::qp_max_columns`).
+enum class Lp_solver_choice { automatic, clp, glpk, exact, qp_solver };
 
 /*!
   \brief Outcome of a run.
@@ -107,6 +109,13 @@ struct Mwt_options
   /// solver asks the progress callback about once a second (stage "LP solve", fraction = elapsed part of the
   /// limit, 0 without one); returning false stops it and the run throws `CGAL::MDCS::Operation_cancelled`.
   double lp_time_limit = 0;
+  /// `Lp_solver_choice::qp_solver` only: the largest LP (number of columns, i.e. empty triangles left in the LP)
+  /// handed to CGAL's `QP_solver`; a larger one is refused before the solve with
+  /// `Linear_program_too_large` (a `std::length_error`). 0: no limit. CGAL's solver runs its whole simplex in one
+  /// call without callback, so neither `lp_time_limit` nor the progress callback can stop it once started; its
+  /// processor time grows about like the cube of the columns or faster (the default: about 45 s or less on the
+  /// measured sets, extrapolated; see the manual).
+  std::size_t qp_max_columns = 600;
   /// `minimum_weight_triangulation_2()`: points in strictly convex position (every point a corner of the convex
   /// hull) are triangulated by the exact dynamic program of convex polygons (`convex_polygon_mwt_2()`, O(n^3)
   /// time, 12 n^2 bytes), without candidate edges, triangles or LP (whose n^3 / 6 columns made 64 cocircular

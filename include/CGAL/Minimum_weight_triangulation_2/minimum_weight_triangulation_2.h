@@ -7,6 +7,7 @@
 #define CGAL_MINIMUM_WEIGHT_TRIANGULATION_2_MINIMUM_WEIGHT_TRIANGULATION_2_H
 
 #include <CGAL/Minimum_weight_triangulation_2/Minimum_weight_triangulation_lp_2.h>
+#include <CGAL/Minimum_weight_triangulation_2/QP_solver_linear_program_solver.h>
 #include <CGAL/Minimum_weight_triangulation_2/internal/Coordinate_range_2.h>
 #include <CGAL/Kernel_traits.h>
 #if defined(MDCS_HAS_CLP)
@@ -53,10 +54,12 @@ inline Lp_solve_control lp_solve_control(const Mwt_options& options)
 
 } // namespace internal
 
-/// Whether a built-in solver model was compiled in (MDCS_HAS_CLP / MDCS_HAS_GLPK).
+/// Whether a built-in solver model was compiled in (MDCS_HAS_CLP / MDCS_HAS_GLPK; `qp_solver`, CGAL's own
+/// exact solver, always is).
 inline bool has_lp_solver(Lp_solver_choice c)
 {
   switch(c) {
+    case Lp_solver_choice::qp_solver: return true;
 #if defined(MDCS_HAS_CLP)
     case Lp_solver_choice::clp: return true;
 #endif
@@ -154,12 +157,17 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
 
 /*!
   \brief Minimum weight triangulation of a point set, with the built-in solver chosen by `options.solver`
-  (automatic: CLP's dual simplex when available, else GLPK). Fractional LP optima are resolved by GLPK's
-  branch and cut when `options.resolve_fractional` and GLPK is available.
+  (automatic: CLP's dual simplex when available, else GLPK; `qp_solver`: CGAL's exact `QP_solver`, never chosen
+  automatically). Fractional LP optima are resolved by GLPK's branch and cut when `options.resolve_fractional`
+  and GLPK is available, whichever solver found them.
 
   The LP solve is bounded by `options.lp_time_limit` (status `time_limit_reached`), branch and bound by
   `options.branch_and_bound_time_limit` (status `fractional_bound_only`); both ask `options.progress` about once
-  a second (stages "LP solve" and "branch and bound"), which can cancel them.
+  a second (stages "LP solve" and "branch and bound"), which can cancel them. Except `qp_solver`: CGAL's
+  `QP_solver` cannot be stopped once started (see `QP_solver_linear_program_solver`), so the progress callback is
+  asked just before its solve and the time limit is not enforced in it; an LP with more than
+  `options.qp_max_columns` columns is refused instead (`Linear_program_too_large`, after the candidate edges and
+  the triangles were computed: the LP's size is known only then).
 
   `ConcurrencyTag` and `options.threads` as above, e.g.
   `minimum_weight_triangulation_2<CGAL::Parallel_if_available_tag>(points, options)`.
@@ -167,7 +175,8 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
   \returns a `Mwt_result`: the triangles (index triples, counter-clockwise), the weight, the status and a
   rigorous lower bound.
   \throws std::invalid_argument on bad input, std::runtime_error when the requested solver is not built in,
-  CGAL::MDCS::Operation_cancelled when the progress callback returns false.
+  CGAL::MDCS::Operation_cancelled when the progress callback returns false, `Linear_program_too_large` (a
+  `std::length_error`) when `qp_solver` is asked for an LP of more than `options.qp_max_columns` columns.
 */
 template <class ConcurrencyTag = CGAL::Sequential_tag, class PointRange>
 Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_options& options = Mwt_options())
@@ -202,6 +211,12 @@ Mwt_result minimum_weight_triangulation_2(const PointRange& points, const Mwt_op
       return minimum_weight_triangulation_2<ConcurrencyTag>(points, options, glpk, bb);
     }
 #endif
+    case Lp_solver_choice::qp_solver: {
+      QP_solver_linear_program_solver<> qp;
+      qp.set_control(control);   // keep_going asked once, before the solve
+      qp.set_max_columns(options.qp_max_columns);
+      return minimum_weight_triangulation_2<ConcurrencyTag>(points, options, qp, bb);
+    }
     default: break;
   }
   (void)bb;

@@ -86,8 +86,14 @@ Mwt_result polygonal_domain_mwt(const Polygonal_domain_2<K>& d, const Mwt_option
     solved = true;
   }
 #endif
-  (void)control;
-  (void)c;
+  if(c == Lp_solver_choice::qp_solver) {   // CGAL's exact simplex: the size guard is checked before the solve
+    QP_solver_linear_program_solver<> qp;
+    qp.set_control(control);
+    qp.set_max_columns(options.qp_max_columns);
+    sol = qp.solve(dlp.lp);
+    r.solver = qp.name();
+    solved = true;
+  }
   if(!solved)
     throw std::runtime_error("polygon_with_holes_mwt_2: the requested LP solver was not built in (a domain with holes "
                              "or interior points needs CLP or GLPK)");
