@@ -166,6 +166,7 @@ struct Run_parameters
   double alpha = 0.1, azimuth = 30, elevation = 20, remedy_bias = 0.5;
   int up = 1;
   bool picking = true, mapping = true, orthographic = false, picture = true;
+  bool hierarchy = false; // fine silhouettes through Silhouette_simplifier_3::build_silhouette_hierarchy()
   long frames = 0;
   std::size_t threads = 0; // frames and temporal coherence in parallel (0: every hardware thread)
   std::string name = "mesh";

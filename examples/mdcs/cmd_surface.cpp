@@ -34,13 +34,21 @@ Surface_run run_surface(const Surface_settings& s, const Progress_bar& progress)
   run.seconds_total = seconds_since(t_start);
   check_surface_result(run);
   const std::filesystem::path folder = prepare_output_folder(s.output);
+  std::ostringstream planes_out;
+  if(s.plane_grid > 0)
+    planes_out << run.grid_planes << " (regular plane grid n = " << s.plane_grid << ", m = "
+               << (s.grid_offset_steps == 0 ? s.plane_grid : s.grid_offset_steps) << ", max slope " << s.max_slope << ")";
+  else
+    planes_out << s.planes << " (" << run.pencils << " through the boundary segments, "
+               << (s.distribution == "slope" ? "slope-limited |slope| <= " + (std::ostringstream() << s.max_slope).str()
+                                             : std::string("isotropic"))
+               << ", seed " << s.seed << ")";
+  const std::string plane_text = planes_out.str();
+  const std::size_t plane_count = s.plane_grid > 0 ? run.grid_planes : std::size_t(s.planes);
   std::ostringstream sum;
   sum << std::setprecision(10);
   sum << "problem           " << s.problem << " (" << functional << ")\n"
-      << "planes            " << s.planes << " (" << run.pencils << " through the boundary segments, "
-      << (s.distribution == "slope" ? "slope-limited |slope| <= " + (std::ostringstream() << s.max_slope).str()
-                                    : std::string("isotropic"))
-      << ", seed " << s.seed << ")\n"
+      << "planes            " << plane_text << "\n"
       << "domain            " << (run.problem.is_polygonal() ? "polygon with " + std::to_string(run.problem.domain_polygon.size()) + " vertices, area " + (std::ostringstream() << run.problem.domain_area()).str() : std::string("rectangle")) << "\n"
       << "complex           " << run.cells << " cells, " << run.facets << " facets, " << run.vertices << " vertices\n";
   run.summary_file = (folder / (s.name + "_summary.txt")).string();
@@ -109,7 +117,8 @@ Surface_run run_surface(const Surface_settings& s, const Progress_bar& progress)
   if(s.picture) {
     run.svg = (folder / (s.name + ".svg")).string();
     std::ostringstream cap1, cap2;
-    cap1 << std::setprecision(8) << run.cells << " cells from " << s.planes << " planes; discrete energy "
+    cap1 << std::setprecision(8) << run.cells << " cells from " << plane_count << (s.plane_grid > 0 ? " grid" : "")
+         << " planes; discrete energy "
          << run.surface.energy << (run.has_relaxed ? ", relaxed " : "");
     if(run.has_relaxed) cap1 << run.relaxed.energy;
     const std::string relaxed_on = run.relaxed.triangles.empty()

@@ -11,6 +11,7 @@
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/analytic_solutions_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/plane_grids_3.h>
 #include <CGAL/Variational_minimization/relax_surface_3.h>
 #include <CGAL/Variational_minimization/search_surface_basins_3.h>
 #include <CGAL/Variational_minimization/refine_surface_3.h>
@@ -46,7 +47,8 @@ inline Command_spec surface_command_spec()
   s.synopsis = "[options]";
   s.description =
     "Minimise F(f) = double integral of G(f, f_x, f_y, x, y) globally over the functions made of facets of a random\n"
-    "plane arrangement (BSP cell complex, exact predicates), by a min-cut of the directed dual graph of its cells;\n"
+    "plane arrangement or of the regular plane grid (BSP cell complex, exact predicates), by a min-cut of the\n"
+    "directed dual graph of its cells;\n"
     "write the surface (PLY) and a height-coloured picture (SVG, PNG where rsvg-convert exists).\n";
   s.options = {
     text_option("problem", "NAME", "saddle", "saddle (area, boundary f = x y on [-1,1]^2) | membrane (heavy membrane on a\n"
@@ -55,13 +57,20 @@ inline Command_spec surface_command_spec()
                 {"saddle", "membrane", "blobs", "scherk"}),
     integer_option("planes", "N", "150", 1, 1000, "planes per arrangement (cells grow like N^3: 420 planes make 3.9M cells\n"
                    "and 0.9 GB; 1000 planes about 50M cells and 12 GB)"),
+    integer_option("plane-grid", "N", "0", 0, 63, "the regular plane grid G_N instead of random planes (1 to 63; 0: random\n"
+                   "planes): gradients --max-slope (i, j) / N, |i|, |j| <= N, at heights spaced (zmax - zmin) / M,\n"
+                   "and the pencils of slopes --max-slope t / N (t = -N..N) through every boundary segment; at\n"
+                   "most 16384 planes (otherwise exit 2); the problem's rectangle only (not --domain); excludes\n"
+                   "--planes, --distribution, --pencil-fraction, --seed (but for blobs) and the multi-solve methods"),
+    integer_option("grid-offset-steps", "M", "0", 0, 16384, "with --plane-grid: heights per range of the grid's planes (0: M = N;\n"
+                   "M = 1 makes far fewer cells)"),
     integer_option("segments", "S", "4", 1, 256, "boundary segments per side (per polygon edge) of the domain"),
     text_option("domain", "P", "", "a polygonal domain instead of the problem's rectangle: \"x0,y0;x1,y1;...\" (a simple\n"
                 "polygon, at most 1000 vertices; rounded to 1/256 of its bounding box) or L (an L inside\n"
                 "the rectangle)"),
     text_option("distribution", "D", "slope", "slope (slope-limited) | isotropic", {"slope", "isotropic"}),
-    real_option("max-slope", "S", "3", 0, 1000, "slope bound of slope-limited planes (steeper planes are nearly vertical\n"
-                "over the domain)", true),
+    real_option("max-slope", "S", "3", 0, 1000, "slope bound of slope-limited planes, or the largest gradient component of\n"
+                "--plane-grid (steeper planes are nearly vertical over the domain)", true),
     real_option("pencil-fraction", "F", "0.2", 0, 1, "share of the planes through the boundary segments"),
     integer_option("plane-selection", "K", "1", 1, 1000, "plane selection with K iterations (1: a single solve)"),
     integer_option("refine", "R", "0", 0, 100, "adaptive refinement: R runs give an envelope, a new arrangement of N planes\n"
@@ -93,6 +102,8 @@ struct Surface_settings
   std::string problem = "saddle";
   std::string domain;
   long planes = 150;
+  long plane_grid = 0;        // > 0: the regular plane grid of that order instead of random planes
+  long grid_offset_steps = 0; // its height steps m (0: m = plane_grid)
   long segments = 4;
   std::string distribution = "slope";
   double max_slope = 3;
@@ -126,6 +137,7 @@ struct Surface_run
   std::size_t refine_below = 0, refine_above = 0, refine_nodes = 0, refine_outside = 0;
   double exact = NAN;
   std::size_t cells = 0, facets = 0, vertices = 0, pencils = 0;
+  std::size_t grid_planes = 0; // --plane-grid: the planes of the grid (walls not counted)
   double seconds_build = 0, seconds_weights = 0, seconds_cut = 0, seconds_relax = 0, seconds_total = 0;
   std::string ply, relaxed_ply, svg, summary, summary_file;
   std::vector<std::string> files; // written, in order
@@ -143,6 +155,18 @@ inline Surface_settings parse_surface_settings(const Parsed_options& o)
   s.domain = o.text("domain");
   if(!s.domain.empty() && s.problem == "blobs") throw Usage_error("--domain is not available for --problem blobs");
   s.planes = long(o.integer("planes"));
+  s.plane_grid = long(o.integer("plane-grid"));
+  s.grid_offset_steps = long(o.integer("grid-offset-steps"));
+  if(s.plane_grid == 0 && o.given("grid-offset-steps")) throw Usage_error("--grid-offset-steps applies to --plane-grid only");
+  if(s.plane_grid > 0) {
+    // The grid is deterministic and replaces the random planes: their options would be silently ignored.
+    for(const char* random_option : {"planes", "distribution", "pencil-fraction"})
+      if(o.given(random_option))
+        throw Usage_error(std::string("--plane-grid replaces the random planes: it excludes --") + random_option);
+    if(o.given("seed") && s.problem != "blobs")
+      throw Usage_error("--plane-grid is deterministic: --seed applies to random planes (and the blobs functional) only");
+    if(!s.domain.empty()) throw Usage_error("--plane-grid needs the problem's rectangle (not --domain)");
+  }
   s.segments = long(o.integer("segments"));
   s.distribution = o.text("distribution");
   if(s.distribution != "slope" && o.given("max-slope")) throw Usage_error("--max-slope applies to --distribution slope only");
@@ -161,6 +185,8 @@ inline Surface_settings parse_surface_settings(const Parsed_options& o)
   if(s.basin_search && !s.domain.empty()) throw Usage_error("--basin-search needs the problem's rectangle (not --domain)");
   if(s.basin_search && s.refine > 0) throw Usage_error("--basin-search and --refine exclude each other");
   if(s.basin_search && s.tangent_rounds > 0) throw Usage_error("--basin-search and --tangent-rounds exclude each other");
+  if(s.plane_grid > 0 && (s.plane_selection > 1 || s.refine > 0 || s.tangent_rounds > 0))
+    throw Usage_error("--plane-grid excludes --plane-selection, --refine and --tangent-rounds (they draw random planes)");
   s.descents = long(o.integer("descents"));
   if(s.descents > 0 && !s.domain.empty()) throw Usage_error("--descents needs the problem's rectangle (not --domain)");
   s.engine = o.text("engine");
@@ -253,6 +279,23 @@ void run_surface_descents(const Surface_settings& s, const Functional& G, Surfac
 // relative): equal energies to that precision are the same basin.
 inline bool descent_is_lower(double descent, double global) { return descent < global - 1e-6 * std::abs(global); }
 
+// The planes of --plane-grid. The grid's refusals (more than 16384 planes, a --max-slope too small for the lattice
+// at this N) are about the option values, so they are usage errors (exit 2), not bad input data.
+inline std::vector<VM3::Lattice_plane_3> regular_grid_planes(const Surface_settings& s, Surface_run& run)
+{
+  VM3::Regular_surface_plane_options_3 options;
+  options.max_slope = s.max_slope;
+  options.offset_steps = std::size_t(s.grid_offset_steps);
+  std::vector<VM3::Lattice_plane_3> planes;
+  try {
+    planes = VM3::regular_surface_planes_3(run.problem, std::size_t(s.plane_grid), options);
+  } catch(const std::invalid_argument& e) {
+    throw Usage_error(std::string("--plane-grid ") + std::to_string(s.plane_grid) + ": " + e.what());
+  }
+  run.grid_planes = planes.size();
+  return planes;
+}
+
 template <class Functional>
 void run_surface_with(const Surface_settings& s, const Functional& G, Surface_run& run, const Progress_bar& progress)
 {
@@ -262,7 +305,7 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
   po.max_slope = s.max_slope;
   po.pencil_fraction = s.pencil_fraction;
   po.seed = std::uint64_t(s.seed);
-  run.pencils = VM3::surface_pencil_count_3(run.problem, std::size_t(s.planes), po);
+  if(s.plane_grid == 0) run.pencils = VM3::surface_pencil_count_3(run.problem, std::size_t(s.planes), po);
   // The counts of the complex a multi-solve method ended on (only its planes come back): built once more.
   auto record_complex = [&](const std::vector<VM3::Lattice_plane_3>& planes) {
     const VM3::Plane_arrangement_3 A(planes);
@@ -327,7 +370,8 @@ void run_surface_with(const Surface_settings& s, const Functional& G, Surface_ru
       return;
     }
     auto t0 = std::chrono::steady_clock::now();
-    const std::vector<VM3::Lattice_plane_3> planes = VM3::surface_planes_3(run.problem, std::size_t(s.planes), po);
+    const std::vector<VM3::Lattice_plane_3> planes =
+      s.plane_grid > 0 ? regular_grid_planes(s, run) : VM3::surface_planes_3(run.problem, std::size_t(s.planes), po);
     const VM3::Plane_arrangement_3 A = VM3::build_surface_arrangement_3(run.problem, planes, std::ref(progress));
     run.seconds_build = seconds_since(t0);
     run.cells = A.number_of_cells();
@@ -386,6 +430,10 @@ inline void write_surface_json(const Surface_settings& s, const Surface_run& run
 {
   Run_summary_json j;
   j.inputs.add("problem", s.problem).add("domain", s.domain.empty() ? std::string("rectangle") : s.domain);
+  if(s.plane_grid > 0)
+    j.inputs.add("plane_grid", (unsigned long long)s.plane_grid)
+      .add("grid_offset_steps", (unsigned long long)(s.grid_offset_steps == 0 ? s.plane_grid : s.grid_offset_steps))
+      .add("grid_planes", (unsigned long long)run.grid_planes);
   j.timings.add("build", run.seconds_build).add("weights", run.seconds_weights).add("cut", run.seconds_cut)
     .add("relaxation", run.seconds_relax).add("descents", run.seconds_descents);
   Json_object complex;

@@ -16,7 +16,8 @@ True
 
 Surfaces (bivariate problems): minimise ``F(f) = double integral over Omega of G(f, f_x, f_y, x, y)`` over functions
 on a rectangle or a simple polygon with a boundary condition ``f = g`` (or ``g0 <= f <= g1``) on its boundary, by
-a minimum cut of the dual graph of a plane arrangement.
+a minimum cut of the dual graph of a plane arrangement: of random planes, or of the regular plane grid
+(``plane_grid=n``, rectangles only).
 
 Built-in functionals are named (curves: ``"surface_of_rotation"``, ``"arc_length"``; surfaces: ``"area"``,
 ``"membrane"``) and use their closed-form integrals. A user functional is a vectorised NumPy function:
@@ -40,6 +41,7 @@ _core = _mdcs.variational
 
 CURVE_FUNCTIONALS = ("surface_of_rotation", "arc_length")
 SURFACE_FUNCTIONALS = ("area", "membrane")
+_PLANE_GRID_MAX = _core.regular_surface_max_steps  # the largest order n of the regular plane grid (63)
 
 
 def surface_of_rotation_minimum(R, h=1.0):
@@ -84,7 +86,8 @@ class MinimalSurface:
         projected_area: the signed area of the surface's projection (the domain's area when single-valued).
         points, triangles: the triangulated surface, ``(n, 3)`` and ``(m, 3)``, triangles oriented upwards.
         facets, planes: the arrangement facets of the surface and the planes they lie on.
-        arrangement: counts of the plane arrangement (cells, facets, vertices, planes).
+        arrangement: counts of the plane arrangement (cells, facets, vertices, planes: the 6 walls of the box
+            included).
     """
 
     feasible: bool
@@ -279,9 +282,40 @@ def _boundary_values(g, samples, name):
     return values
 
 
-def minimal_surface(functional, *, value_range, boundary, domain=None, polygon=None, upper_boundary=None, planes=150,
-                    segments=4, seed=1, distribution="slope_limited", max_slope=3.0, pencil_fraction=0.2,
-                    engine="pseudoflow", quadrature_level=1, k_g=1.0, z_bottom=None, threads=0, progress="auto"):
+def _plane_source(plane_grid, grid_offset_steps, polygon, random_options):
+    """The plane source of :func:`minimal_surface` as ``(planes, seed, distribution, pencil_fraction, n, m)``, with
+    the random options' defaults filled in, or ValueError when the options of the two sources are mixed."""
+    def whole(value, name, low):
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+            raise ValueError(f"mdcs: {name} must be an integer, got {value!r}")
+        if value < low:
+            raise ValueError(f"mdcs: {name} must be at least {low}, got {value}")
+        return int(value)
+
+    if plane_grid is None:
+        if grid_offset_steps is not None:
+            raise ValueError("mdcs: grid_offset_steps applies to plane_grid only")
+        defaults = {"planes": 150, "seed": 1, "distribution": "slope_limited", "pencil_fraction": 0.2}
+        chosen = {k: defaults[k] if v is None else v for k, v in random_options.items()}
+        return chosen["planes"], chosen["seed"], chosen["distribution"], chosen["pencil_fraction"], 0, 0
+    given = [k for k, v in random_options.items() if v is not None]
+    if given:
+        raise ValueError("mdcs: plane_grid (the regular plane grid) excludes the random-plane options; drop "
+                         + ", ".join(given))
+    if polygon is not None:
+        raise ValueError("mdcs: plane_grid needs a rectangular domain (domain=...), not a polygon; use random planes "
+                         "on a polygon")
+    n = whole(plane_grid, "plane_grid", 1)
+    if n > _PLANE_GRID_MAX:
+        raise ValueError(f"mdcs: plane_grid = {n} is too large: at most {_PLANE_GRID_MAX}")
+    m = 0 if grid_offset_steps is None else whole(grid_offset_steps, "grid_offset_steps", 1)
+    return 150, 1, "slope_limited", 0.0, n, m
+
+
+def minimal_surface(functional, *, value_range, boundary, domain=None, polygon=None, upper_boundary=None, planes=None,
+                    segments=4, seed=None, distribution=None, max_slope=3.0, pencil_fraction=None, plane_grid=None,
+                    grid_offset_steps=None, engine="pseudoflow", quadrature_level=1, k_g=1.0, z_bottom=None,
+                    threads=0, progress="auto"):
     """The globally minimal discrete surface of a bivariate problem (see the module documentation).
 
     Parameters:
@@ -293,9 +327,22 @@ def minimal_surface(functional, *, value_range, boundary, domain=None, polygon=N
         domain: the rectangle ``(xmin, ymin, xmax, ymax)`` (default ``(0, 0, 1, 1)``), or
         polygon: a simple polygon ``(k, 2)`` instead (vertices rounded to 1/256 of its bounding box).
         upper_boundary: with it, the boundary condition is free: ``boundary <= f <= upper_boundary``.
-        planes: planes of the arrangement (pencils through the boundary segments among them).
+        planes: the number of random planes of the arrangement (default 150; pencils through the boundary segments
+            among them).
         segments: boundary segments per side of the rectangle (per polygon edge), 1..256.
-        seed, distribution (``"slope_limited"`` or ``"isotropic"``), max_slope, pencil_fraction: the random planes.
+        seed, distribution, pencil_fraction: the random planes: the seed (default 1), ``"slope_limited"`` (default)
+            or ``"isotropic"``, the share of planes through the boundary segments (default 0.2).
+        max_slope: the largest slope of the planes (default 3): of slope-limited random planes, or the largest
+            gradient component of the grid's planes.
+        plane_grid: instead of random planes, the regular plane grid G_n of order ``n`` (1..63; the C++
+            ``regular_surface_planes_3``): the boundary cone, through every boundary segment the pencil of slopes
+            ``max_slope * t / n`` (t = -n..n), and the planes with gradients ``max_slope * (i, j) / n``
+            (|i|, |j| <= n) at heights spaced ``(zmax - zmin) / m`` apart. About
+            ``(2n + 1)^2 m (1 + max_slope (width + height) / (2 (zmax - zmin)))`` planes plus ``2n + 2`` per
+            boundary segment, at most 16384. Deterministic; rectangular domains only; excludes ``planes``,
+            ``seed``, ``distribution`` and ``pencil_fraction`` (ValueError when combined, or on a polygon).
+        grid_offset_steps: m, the grid's planes of one gradient are spaced ``(zmax - zmin) / m`` apart in height
+            (default n; m = 1 gives far fewer cells and, in the measurements of the manual, the same energy).
         engine: ``"pseudoflow"`` (default), ``"push_relabel"``, ``"boykov_kolmogorov"``.
         quadrature_level: subdivisions of the facet quadrature (0..8) for functionals without a closed form.
         k_g, z_bottom: the membrane's weight per unit height and its reference height (default zmin).
@@ -307,6 +354,9 @@ def minimal_surface(functional, *, value_range, boundary, domain=None, polygon=N
     Returns:
         :class:`MinimalSurface`.
     """
+    planes, seed, distribution, pencil_fraction, grid_n, grid_m = _plane_source(
+        plane_grid, grid_offset_steps, polygon,
+        {"planes": planes, "seed": seed, "distribution": distribution, "pencil_fraction": pencil_fraction})
     if domain is None and polygon is None:
         domain = (0.0, 0.0, 1.0, 1.0)
     samples = _core.surface_boundary_samples(domain, polygon, value_range, int(segments))
@@ -315,7 +365,7 @@ def minimal_surface(functional, *, value_range, boundary, domain=None, polygon=N
     with progress_callback(progress, "surface") as callback:
         arrangement = _core.SurfaceArrangement(domain, polygon, value_range, int(segments), lower, upper,
                                                int(planes), int(seed), distribution, float(max_slope),
-                                               float(pencil_fraction), callback)
+                                               float(pencil_fraction), grid_n, grid_m, callback)
         if isinstance(functional, str):
             z = float("nan") if z_bottom is None else float(z_bottom)
             result = arrangement.solve_builtin(functional, float(k_g), z, int(quadrature_level), engine, threads,

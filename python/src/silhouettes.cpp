@@ -1,9 +1,9 @@
 // Copyright (c) 2026 MDCS contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Bindings of Silhouette_simplification_3: silhouette edges of a mesh for a view, and simplified silhouettes
-// (loops picked among the fine silhouette's loops, or coarse loops mapped onto the fine mesh by minimum cuts)
-// through a coarse mesh built once.
+// Bindings of Silhouette_simplification_3: silhouette edges of a mesh for a view (by a scan of the faces, or by a
+// bounding-cone hierarchy built once for many views), and simplified silhouettes (loops picked among the fine
+// silhouette's loops, or coarse loops mapped onto the fine mesh by minimum cuts) through a coarse mesh built once.
 
 #include "geodesic_surface.h" // mesh_from_arrays(), checked_mesh_arrays()
 
@@ -50,6 +50,18 @@ void read_mesh(py::handle vertices, py::handle faces, Indexed_input& in)
   for(const auto& c : copies) in.caller_vertex[c.second] = std::int64_t(c.first);
 }
 
+// The directed halfedges as an (k, 2) array of the caller's vertex pairs.
+py::array_t<std::int64_t> caller_edges(const Indexed_input& in, const std::vector<Geo_mesh::Halfedge_index>& hs)
+{
+  std::vector<std::int64_t> out;
+  out.reserve(2 * hs.size());
+  for(auto h : hs) {
+    out.push_back(in.caller_vertex[std::size_t(in.mesh.source(h))]);
+    out.push_back(in.caller_vertex[std::size_t(in.mesh.target(h))]);
+  }
+  return to_numpy(std::move(out), py::ssize_t(hs.size()), 2);
+}
+
 py::array_t<std::int64_t> silhouette_edges(py::handle vertices, py::handle faces, py::handle eye, py::handle direction)
 {
   Indexed_input in;
@@ -60,19 +72,48 @@ py::array_t<std::int64_t> silhouette_edges(py::handle vertices, py::handle faces
     py::gil_scoped_release release;
     SS::silhouette_halfedges(in.mesh, view, std::back_inserter(hs));
   }
-  std::vector<std::int64_t> out;
-  for(auto h : hs) {
-    out.push_back(in.caller_vertex[std::size_t(in.mesh.source(h))]);
-    out.push_back(in.caller_vertex[std::size_t(in.mesh.target(h))]);
-  }
-  return to_numpy(std::move(out), py::ssize_t(hs.size()), 2);
+  return caller_edges(in, hs);
 }
+
+// Silhouette edges of one mesh for many views: the bounding-cone hierarchy over its edges is built once; every
+// query returns what silhouette_edges() returns for the view (same edges, same order). Queries are const in the
+// library and run without the GIL, so Python threads may query one object concurrently.
+class Py_silhouette_edges
+{
+public:
+  Py_silhouette_edges(py::handle vertices, py::handle faces)
+  {
+    read_mesh(vertices, faces, input_);
+    py::gil_scoped_release release;
+    hierarchy_ = std::make_unique<Hierarchy>(input_.mesh);
+  }
+
+  py::array_t<std::int64_t> edges(py::handle eye, py::handle direction) const
+  {
+    const View view = make_view(eye, direction);
+    std::vector<Geo_mesh::Halfedge_index> hs;
+    {
+      py::gil_scoped_release release;
+      hierarchy_->silhouette_halfedges(view, std::back_inserter(hs));
+    }
+    return caller_edges(input_, hs);
+  }
+
+  std::size_t faces() const { return input_.mesh.number_of_faces(); }
+  std::size_t nodes() const { return hierarchy_->number_of_nodes(); }
+  std::size_t edges_outside_the_tree() const { return hierarchy_->number_of_edges_outside_the_tree(); }
+
+private:
+  typedef SS::Silhouette_edge_hierarchy_3<Geo_mesh> Hierarchy;
+  Indexed_input input_; // the hierarchy's halfedges are descriptors of this mesh
+  std::unique_ptr<Hierarchy> hierarchy_;
+};
 
 class Py_simplifier
 {
 public:
   Py_simplifier(py::handle vertices, py::handle faces, std::size_t target_faces, unsigned smoothing_iterations,
-                py::object progress)
+                bool hierarchy, py::object progress)
   {
     read_mesh(vertices, faces, input_);
     if(target_faces < 4) throw Value_error("mdcs: target_faces must be at least 4");
@@ -85,6 +126,8 @@ public:
         SS::build_coarse_mesh(input_.mesh, get(CGAL::vertex_point, input_.mesh), options, std::ref(bridge)));
       simplifier_ = std::make_unique<SS::Silhouette_simplifier_3<Geo_mesh>>(input_.mesh, coarse_->mesh,
                                                                               coarse_->coarse_face_of_fine_face);
+      // The same fine silhouettes, found without classifying every fine face of each view.
+      if(hierarchy) simplifier_->build_silhouette_hierarchy();
       return 0;
     });
   }
@@ -160,6 +203,7 @@ public:
 
   std::size_t fine_faces() const { return simplifier_->fine().number_of_faces(); }
   std::size_t coarse_faces() const { return simplifier_->coarse().number_of_faces(); }
+  bool uses_hierarchy() const { return simplifier_->uses_silhouette_hierarchy(); }
 
 private:
   Indexed_input input_;
@@ -174,9 +218,17 @@ void bind_silhouettes(py::module_& m)
   py::module_ s = m.def_submodule("silhouettes", "C++ core of mdcs.silhouettes (use mdcs.silhouettes)");
   s.def("silhouette_edges", &silhouette_edges, py::arg("vertices"), py::arg("faces"), py::arg("eye"),
         py::arg("direction"));
+  py::class_<Py_silhouette_edges>(s, "SilhouetteEdges")
+    .def(py::init<py::handle, py::handle>(), py::arg("vertices"), py::arg("faces"))
+    .def("edges", &Py_silhouette_edges::edges, py::arg("eye"), py::arg("direction"))
+    .def_property_readonly("number_of_faces", &Py_silhouette_edges::faces)
+    .def_property_readonly("number_of_nodes", &Py_silhouette_edges::nodes)
+    .def_property_readonly("number_of_edges_outside_the_tree", &Py_silhouette_edges::edges_outside_the_tree);
   py::class_<Py_simplifier>(s, "Simplifier")
-    .def(py::init<py::handle, py::handle, std::size_t, unsigned, py::object>(), py::arg("vertices"), py::arg("faces"),
-         py::arg("target_faces"), py::arg("smoothing_iterations"), py::arg("progress"))
+    .def(py::init<py::handle, py::handle, std::size_t, unsigned, bool, py::object>(), py::arg("vertices"),
+         py::arg("faces"), py::arg("target_faces"), py::arg("smoothing_iterations"), py::arg("hierarchy"),
+         py::arg("progress"))
+    .def_property_readonly("uses_hierarchy", &Py_simplifier::uses_hierarchy)
     .def("coarse_mesh", &Py_simplifier::coarse_mesh)
     .def_property_readonly("number_of_fine_faces", &Py_simplifier::fine_faces)
     .def_property_readonly("number_of_coarse_faces", &Py_simplifier::coarse_faces)

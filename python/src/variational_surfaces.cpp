@@ -3,7 +3,8 @@
 //
 // Bindings of the bivariate problems of Variational_minimization: a plane arrangement built for a surface problem,
 // its facets (for weights computed in Python from a vectorised user functional), the built-in functionals, and the
-// globally minimal surface for given weights.
+// globally minimal surface for given weights. The planes are random (surface_planes_3) or the regular grid
+// (regular_surface_planes_3).
 
 #include "common.h"
 
@@ -11,6 +12,7 @@
 #include <CGAL/Variational_minimization/Plane_arrangement_3.h>
 #include <CGAL/Variational_minimization/Surface_problem_3.h>
 #include <CGAL/Variational_minimization/minimize_surface_functional_3.h>
+#include <CGAL/Variational_minimization/plane_grids_3.h>
 #include <CGAL/Variational_minimization/surface_facet_weights_3.h>
 #include <CGAL/Variational_minimization/surface_functionals_3.h>
 #include <CGAL/Variational_minimization/surface_planes_3.h>
@@ -103,7 +105,7 @@ public:
   Py_surface_arrangement(py::handle domain, py::handle polygon, py::handle value_range, int segments,
                          py::handle lower_values, py::handle upper_values, std::size_t planes, std::uint64_t seed,
                          const std::string& distribution, double max_slope, double pencil_fraction,
-                         py::object progress)
+                         std::size_t plane_grid, std::size_t grid_offset_steps, py::object progress)
     : problem_(problem_geometry(domain, polygon, value_range, segments))
   {
     // The boundary data at the samples (in the order of boundary_samples()).
@@ -123,6 +125,19 @@ public:
     problem_.lower_boundary = table(lower_values, "boundary values");
     if(!upper_values.is_none()) problem_.upper_boundary = table(upper_values, "upper boundary values");
     problem_.validate();
+    Progress_bridge bridge(progress);
+    if(plane_grid > 0) {
+      // The grid's own checks (rectangle, n, offset steps, max_slope, plane count) raise ValueError; they run before
+      // the arrangement is built, so a too large grid never allocates it.
+      VM::Regular_surface_plane_options_3 options;
+      options.max_slope = checked_number(py::float_(max_slope), "max_slope", 0, true);
+      options.offset_steps = grid_offset_steps;
+      arrangement_ = run_without_gil(bridge, [&] {
+        const std::vector<VM::Lattice_plane_3> P = VM::regular_surface_planes_3(problem_, plane_grid, options);
+        return std::make_shared<VM::Plane_arrangement_3>(VM::build_surface_arrangement_3(problem_, P, std::ref(bridge)));
+      });
+      return;
+    }
     if(planes < 1) throw Value_error("mdcs: planes must be at least 1");
     VM::Surface_plane_options_3 options;
     if(distribution == "slope_limited") options.distribution = VM::Plane_distribution_3::slope_limited;
@@ -132,7 +147,6 @@ public:
     if(!(pencil_fraction >= 0 && pencil_fraction <= 1)) throw Value_error("mdcs: pencil_fraction must be in [0, 1]");
     options.pencil_fraction = pencil_fraction;
     options.seed = seed;
-    Progress_bridge bridge(progress);
     arrangement_ = run_without_gil(bridge, [&] {
       const std::vector<VM::Lattice_plane_3> P = VM::surface_planes_3(problem_, planes, options);
       return std::make_shared<VM::Plane_arrangement_3>(VM::build_surface_arrangement_3(problem_, P, std::ref(bridge)));
@@ -250,12 +264,13 @@ void bind_variational_surfaces(py::module_& m)
   py::module_ v = m.attr("variational").cast<py::module_>();
   v.def("surface_boundary_samples", &boundary_samples, py::arg("domain"), py::arg("polygon"), py::arg("value_range"),
         py::arg("segments"));
+  v.attr("regular_surface_max_steps") = VM::regular_surface_max_steps_3();
   py::class_<Py_surface_arrangement>(v, "SurfaceArrangement")
     .def(py::init<py::handle, py::handle, py::handle, int, py::handle, py::handle, std::size_t, std::uint64_t,
-                  const std::string&, double, double, py::object>(),
+                  const std::string&, double, double, std::size_t, std::size_t, py::object>(),
          py::arg("domain"), py::arg("polygon"), py::arg("value_range"), py::arg("segments"), py::arg("lower_values"),
          py::arg("upper_values"), py::arg("planes"), py::arg("seed"), py::arg("distribution"), py::arg("max_slope"),
-         py::arg("pencil_fraction"), py::arg("progress"))
+         py::arg("pencil_fraction"), py::arg("plane_grid"), py::arg("grid_offset_steps"), py::arg("progress"))
     .def_property_readonly("number_of_cells", &Py_surface_arrangement::cells)
     .def_property_readonly("number_of_facets", &Py_surface_arrangement::facets)
     .def_property_readonly("number_of_vertices", &Py_surface_arrangement::vertices)

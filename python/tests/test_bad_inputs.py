@@ -185,3 +185,21 @@ def test_bad_files(tmp_path):
     garbage.write_bytes(b"\x00\xff" * 50)
     with pytest.raises(ValueError):
         mdcs.io.read_mesh(garbage)
+
+
+def test_bad_silhouette_hierarchy_inputs():
+    edges = mdcs.silhouettes.SilhouetteEdges(V, F)
+    with pytest.raises(ValueError, match="exactly one of eye"):
+        edges.edges()
+    with pytest.raises(ValueError, match="exactly one of eye"):
+        edges.edges(eye=[0, 0, 5], direction=[0, 0, 1])
+    with pytest.raises(ValueError, match="direction"):
+        edges.edges(direction=[0, 0, 0])
+    with pytest.raises(ValueError, match="eye"):
+        edges.edges(eye=[0, np.nan, 5])
+    with pytest.raises(IndexError):
+        mdcs.silhouettes.SilhouetteEdges(V, np.array([[0, 1, len(V)]]))
+    with pytest.raises(ValueError):
+        mdcs.silhouettes.SilhouetteEdges(np.array([[0, 0, 0], [1, 0, 0], [0, np.inf, 0]]), np.array([[0, 1, 2]]))
+    with pytest.raises(ValueError, match="hierarchy"):
+        mdcs.silhouettes.Simplifier(V, F, hierarchy="yes")

@@ -45,3 +45,65 @@ def test_convex_surface_has_one_closed_loop_and_the_simple_silhouette_uses_mesh_
             assert tuple(sorted((a, b))) in edges
     cv, cf, face_map = simplifier.coarse_mesh()
     assert cv.shape[1] == 3 and cf.shape[1] == 3 and len(face_map) == len(F) and face_map.max() < len(cf)
+
+
+def torus(n_major=40, n_minor=16, R=1.0, r=0.4):
+    """A torus of radii R and r, outward faces: a surface with saddles, so a view has several silhouette loops."""
+    u, v = np.meshgrid(np.arange(n_major) * 2 * np.pi / n_major, np.arange(n_minor) * 2 * np.pi / n_minor,
+                       indexing="ij")
+    V = np.c_[((R + r * np.cos(v)) * np.cos(u)).ravel(), ((R + r * np.cos(v)) * np.sin(u)).ravel(),
+              (r * np.sin(v)).ravel()]
+    F = []
+    for i in range(n_major):
+        for j in range(n_minor):
+            a, b = i * n_minor + j, ((i + 1) % n_major) * n_minor + j
+            c, d = ((i + 1) % n_major) * n_minor + (j + 1) % n_minor, i * n_minor + (j + 1) % n_minor
+            F += [[a, b, c], [a, c, d]]
+    return V, np.array(F, dtype=np.int64)
+
+
+def views(seed, count):
+    """Perspective eyes (outside, near and inside the mesh) and orthographic directions, axis-aligned ones among
+    them (faces seen edge-on, where the exact predicate decides)."""
+    rng = np.random.default_rng(seed)
+    out = [dict(direction=d) for d in ([0, 0, 1], [0, 0, -1], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 0, 0.5])]
+    while len(out) < count:
+        d = rng.normal(size=3)
+        if len(out) % 2:
+            out.append(dict(direction=d))
+        else:
+            out.append(dict(eye=d * rng.choice([0.3, 1.2, 3.0, 50.0])))
+    return out
+
+
+def test_the_hierarchy_finds_the_silhouette_edges_of_the_scan():
+    # The scan (silhouette_edges) classifies every face; the hierarchy skips groups of faces proven to face one way:
+    # the same edges, in the same order, for every view (26 views per mesh, half orthographic).
+    for V, F, seed in (icosphere(3) + (1,), torus() + (2,)):
+        edges = mdcs.silhouettes.SilhouetteEdges(V, F)
+        assert edges.number_of_faces == len(F) and edges.number_of_nodes > 1
+        counts = []
+        for view in views(seed, 26):
+            expected = mdcs.silhouettes.silhouette_edges(V, F, **view)
+            got = edges.edges(**view)
+            assert got.dtype == np.int64 and got.shape == expected.shape
+            assert np.array_equal(got, expected), view
+            counts.append(len(got))
+        assert sum(c > 0 for c in counts) > len(counts) // 2  # the views see silhouettes (eyes inside may not)
+
+
+def test_the_simplifier_with_a_hierarchy_gives_the_same_frames():
+    V, F = bumpy_sphere(3, amplitude=0.05)
+    plain = mdcs.silhouettes.Simplifier(V, F, target_faces=200, progress=False)
+    fast = mdcs.silhouettes.Simplifier(V, F, target_faces=200, hierarchy=True, progress=False)
+    assert fast.uses_hierarchy and not plain.uses_hierarchy
+    for view in views(3, 8):
+        a, b = plain.silhouette(**view), fast.silhouette(**view)
+        assert a.fine_silhouette_edges == b.fine_silhouette_edges > 0
+        assert a.coarse_silhouette_edges == b.coarse_silhouette_edges
+        assert a.picking_error == b.picking_error
+        for name in ("fine", "picked", "mapped", "coarse"):
+            la, lb = getattr(a, name), getattr(b, name)
+            assert len(la) == len(lb)
+            for (va, ca), (vb, cb) in zip(la, lb):
+                assert ca == cb and np.array_equal(va, vb)

@@ -22,6 +22,8 @@ Arguments are split like a shell would (shlex), without a shell. Checks, separat
                              may have more vertices: e.g. a double cover that numbers its first sheet like PATH)
     npyrow:NPY:ROW=PLY~TOL   row ROW of the float64 .npy matrix NPY equals, within TOL, the distances of the PLY
                              file PLY (inf in the matrix = -1 in the PLY: unreachable)
+    same:PATH=PATH2          the files PATH and PATH2 are byte for byte the same (e.g. the outputs of an `also:` run
+                             that reaches the same result another way)
 
 usage: run_cli_cases.py MDCS_EXECUTABLE CASE_FILE... [--cgal DIR] [--memory-mib N] [--filter TEXT] [--list]
 The memory limit (address space, default 4096 MiB) is not applied to sanitizer builds, whose shadow memory
@@ -250,6 +252,14 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
                             problems.append(f"file '{path}' lacks '{value}'")
                 except OSError as e:
                     problems.append(f"cannot read '{path}' ({e})")
+            elif kind == "same":
+                first, _, second = value.partition("=")
+                try:
+                    with open(os.path.join(tmp, first), "rb") as f, open(os.path.join(tmp, second), "rb") as g:
+                        if f.read() != g.read():
+                            problems.append(f"files '{first}' and '{second}' differ")
+                except OSError as e:
+                    problems.append(f"cannot compare '{first}' and '{second}' ({e})")
             elif kind == "json":
                 path, _, expected = value.rpartition(":")
                 key, _, wanted = expected.partition("=")
@@ -263,7 +273,7 @@ def run_case(exe, case, cgal, memory_mib, sanitized):
                         problems.append(f"{path}: {key} is {got}, expected {wanted}")
                 except (OSError, ValueError, KeyError, IndexError, TypeError) as e:
                     problems.append(f"{path}: cannot read {key} ({e})")
-            elif kind not in ("stderr", "stdout", "file", "nofile", "fsize", "nostderr") and not kind.startswith(("contains:", "plydist:", "npyrow:")):
+            elif kind not in ("stderr", "stdout", "file", "nofile", "fsize", "nostderr", "same") and not kind.startswith(("contains:", "plydist:", "npyrow:")):
                 problems.append(f"unknown check '{check}'")
         if problems:
             tail = "\n      ".join(err.strip().splitlines()[-6:])
